@@ -1,0 +1,36 @@
+// Owns one in-process LIGGGHTS instance on its own duplicate of a communicator, with parcelflow's
+// styles registered (see liggghts_post_create_hook.cpp), and installs LIGGGHTS' own signal handlers so
+// that Ctrl-C or a scheduler's SIGTERM stops a run the way the stock `liggghts` binary does.
+#pragma once
+
+#include <mpi.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace LAMMPS_NS { class LAMMPS; }
+
+namespace parcelflow::coupling {
+
+class LiggghtsInstance {
+ public:
+  // `arguments` are LIGGGHTS command-line arguments (without the program name), e.g. {"-in", "x.in"}.
+  LiggghtsInstance(MPI_Comm world, const std::vector<std::string>& arguments);
+  ~LiggghtsInstance();
+  LiggghtsInstance(const LiggghtsInstance&) = delete;
+  LiggghtsInstance& operator=(const LiggghtsInstance&) = delete;
+
+  LAMMPS_NS::LAMMPS* lammps() const { return lmp_; }
+  void runInputFile();                 // the file given with -in, as `liggghts -in FILE` does
+  void runFile(const std::string& path);
+  void command(const std::string& line);
+
+  static void installSignalHandlers();
+
+ private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  LAMMPS_NS::LAMMPS* lmp_ = nullptr;
+};
+
+}  // namespace parcelflow::coupling

@@ -1,0 +1,42 @@
+#!/usr/bin/env python3
+"""The parcelflow command line: help, version, usage errors (exit code 2), -var passed to LIGGGHTS."""
+import os
+import subprocess
+import sys
+import tempfile
+
+PROGRAM = sys.argv[1]
+results = []
+
+
+def check(name, args, code, must_contain, cwd=None):
+    done = subprocess.run([PROGRAM] + args, capture_output=True, text=True, errors="replace",
+                          timeout=60, cwd=cwd)
+    text = done.stdout + done.stderr
+    ok = done.returncode == code and all(s in text for s in must_contain)
+    results.append(ok)
+    print(f"{'ok  ' if ok else 'FAIL'} {name}: exit {done.returncode} (want {code})")
+    if not ok:
+        print(text[-2000:])
+
+
+check("--help", ["--help"], 0, ["usage: parcelflow run CASE", "parcelflow dem SCRIPT"])
+check("--version", ["--version"], 0, ["parcelflow 0.1.0"])
+check("no arguments", [], 2, ["no command given", "usage:"])
+check("unknown command", ["fly"], 2, ["unknown command 'fly'", "allowed: run, dem"])
+check("dem without script", ["dem"], 2, ["needs a LIGGGHTS input script"])
+check("dem with unknown option", ["dem", "x.in", "-bogus"], 2, ["unknown option '-bogus'"])
+check("dem -var without value", ["dem", "x.in", "-var", "a"], 2, ["-var NAME VALUE"])
+check("dem missing script", ["dem", "/nonexistent/in.x"], 2, ["cannot read the LIGGGHTS script '/nonexistent/in.x'"])
+
+with tempfile.TemporaryDirectory() as tmp:
+    with open(os.path.join(tmp, "in.var"), "w") as f:
+        f.write('print "value of answer: ${answer}"\n')
+    check("dem -var reaches the script", ["dem", "in.var", "-var", "answer", "42"], 0,
+          ["value of answer: 42"], cwd=tmp)
+    check("dem script error reaches the user", ["dem", "in.var"], 1, ["Substitution for illegal variable"],
+          cwd=tmp)
+
+failed = results.count(False)
+print(f"{len(results) - failed} passed, {failed} failed")
+sys.exit(1 if failed else 0)
