@@ -1,0 +1,163 @@
+#include "gas_config.hpp"
+
+#include "config_error.hpp"
+#include "yaml_section.hpp"
+
+namespace parcelflow::cfd {
+
+const std::vector<std::string>& GasConfig::ownedTopLevelKeys() {
+  static const std::vector<std::string> keys{"mesh",       "geometry",      "gas",
+                                             "boundaries", "inlet_regions", "solver"};
+  return keys;
+}
+
+GasConfig GasConfig::fromFile(const std::string& path) {
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("cannot read " + path + ": " + e.what());
+  }
+  return GasConfig(root);
+}
+
+GasConfig::GasConfig(const YAML::Node& root) {
+  const YamlSection top(root, "");
+  settings_.mesh = readMesh(top.map("mesh"));
+  settings_.geometry = readGeometry(root);
+  settings_.gas = readGas(top.map("gas"));
+  settings_.boundaries = readBoundaries(top.map("boundaries"));
+  settings_.inletRegions = readInletRegions(root);
+  settings_.solver = top.has("solver") ? readSolver(top.map("solver")) : SolverSettings{};
+}
+
+MeshSettings GasConfig::readMesh(const YamlSection& s) {
+  s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights"});
+  MeshSettings m;
+  m.origin = s.vec3("origin", Vec3::Zero(), Range::any());
+  m.lengths = s.vec3("lengths", std::nullopt, Range::positive());
+  m.cells = s.int3("cells", 1, 100000);
+  m.ghostLayers = s.integer("ghost_layers", 2, 1, 5);
+  if (s.has("partition_weights")) {
+    for (const auto& item : s.listOfMaps("partition_weights")) {
+      item.allowOnly({"region", "weight"});
+      PartitionWeight w;
+      w.region = Primitive::fromYaml(item.map("region"));
+      w.weight = item.integer("weight", std::nullopt, 1, 1000);
+      m.partitionWeights.push_back(w);
+    }
+  }
+  return m;
+}
+
+Geometry GasConfig::readGeometry(const YAML::Node& root) {
+  const YamlSection top(root, "");
+  if (!top.has("geometry")) return Geometry();
+  return readShapeList(top, "geometry");
+}
+
+Geometry GasConfig::readShapeList(const YamlSection& parent, const std::string& key) {
+  std::vector<Geometry::Item> items;
+  for (const auto& item : parent.listOfMaps(key)) {
+    item.allowOnly({"op", "shape", "patch"});
+    const std::string op = item.word("op", "union", {"union", "cut"});
+    const std::string patch = item.text("patch", "");
+    if (op == "union" && !patch.empty())
+      item.fail("patch", "is only allowed with op: cut (it names the walls of the cut-out)");
+    items.push_back({op == "union" ? Geometry::Op::Union : Geometry::Op::Cut,
+                     Primitive::fromYaml(item.map("shape")), patch});
+  }
+  return Geometry(items);
+}
+
+GasProperties GasConfig::readGas(const YamlSection& s) {
+  s.allowOnly({"density", "viscosity", "gravity"});
+  GasProperties g;
+  g.density = s.number("density", std::nullopt, Range::leftOpen(0, 1e4));
+  g.viscosity = s.number("viscosity", std::nullopt, Range::leftOpen(0, 1e3));
+  g.gravity = s.vec3("gravity", Vec3(0, 0, -9.81), Range::closed(-1e3, 1e3));
+  return g;
+}
+
+std::vector<BoundarySettings> GasConfig::readBoundaries(const YamlSection& s) {
+  // Patch names are free here: the mesh decides which exist (checked when the solver is built).
+  std::vector<BoundarySettings> out;
+  for (const auto& name : s.keys()) {
+    const YamlSection b = s.map(name);
+    BoundarySettings bc;
+    bc.patch = name;
+    const std::string type = b.word("type", std::nullopt, {"velocity_inlet", "pressure_outlet", "wall"});
+    if (type == "velocity_inlet") {
+      b.allowOnly({"type", "superficial_velocity"});
+      bc.type = BoundaryType::VelocityInlet;
+      bc.superficialVelocity = b.vec3("superficial_velocity", std::nullopt, Range::closed(-1e3, 1e3));
+    } else if (type == "pressure_outlet") {
+      b.allowOnly({"type", "pressure"});
+      bc.type = BoundaryType::PressureOutlet;
+      bc.pressure = b.number("pressure", 0.0, Range::closed(-1e9, 1e9));
+    } else {
+      b.allowOnly({"type", "slip"});
+      bc.type = b.word("slip", "no_slip", {"no_slip", "free_slip"}) == "no_slip"
+                    ? BoundaryType::NoSlipWall
+                    : BoundaryType::FreeSlipWall;
+    }
+    out.push_back(bc);
+  }
+  return out;
+}
+
+std::vector<InletRegionSettings> GasConfig::readInletRegions(const YAML::Node& root) {
+  const YamlSection top(root, "");
+  std::vector<InletRegionSettings> out;
+  if (!top.has("inlet_regions")) return out;
+  for (const auto& item : top.listOfMaps("inlet_regions")) {
+    item.allowOnly({"name", "region", "flow_rate", "velocity"});
+    InletRegionSettings r;
+    r.name = item.text("name", std::nullopt);
+    r.region = readShapeList(item, "region");
+    if (r.region.items().empty()) item.fail("region", "must list at least one shape");
+    r.flowRate = item.number("flow_rate", std::nullopt, Range::positive());
+    r.velocity = item.vec3("velocity", Vec3::Zero(), Range::closed(-1e3, 1e3));
+    out.push_back(r);
+  }
+  return out;
+}
+
+LinearSolverSettings GasConfig::readLinearSolver(const YamlSection& s,
+                                                 LinearSolverSettings fallback) {
+  s.allowOnly({"tolerance", "absolute_tolerance", "max_iterations", "preconditioner"});
+  LinearSolverSettings l = fallback;
+  l.relTolerance = s.number("tolerance", fallback.relTolerance, Range::closed(1e-16, 0.1));
+  l.absTolerance = s.number("absolute_tolerance", fallback.absTolerance, Range::nonNegative());
+  l.maxIterations = s.integer("max_iterations", fallback.maxIterations, 1, 100000);
+  const char* current = fallback.preconditioner == PreconditionerType::Jacobi ? "jacobi"
+                        : fallback.preconditioner == PreconditionerType::BlockCholesky
+                            ? "block_cholesky"
+                            : "block_ic";
+  const std::string p =
+      s.word("preconditioner", std::string(current), {"jacobi", "block_ic", "block_cholesky"});
+  l.preconditioner = p == "jacobi"           ? PreconditionerType::Jacobi
+                     : p == "block_cholesky" ? PreconditionerType::BlockCholesky
+                                             : PreconditionerType::BlockIncompleteCholesky;
+  return l;
+}
+
+SolverSettings GasConfig::readSolver(const YamlSection& s) {
+  s.allowOnly({"piso_correctors", "convection", "pressure", "momentum"});
+  SolverSettings out;
+  out.pisoCorrectors = s.integer("piso_correctors", out.pisoCorrectors, 1, 10);
+  const std::string conv =
+      s.word("convection", "limited_linear_upwind", {"upwind", "limited_linear_upwind"});
+  out.convection =
+      conv == "upwind" ? ConvectionScheme::Upwind : ConvectionScheme::LimitedLinearUpwind;
+  if (s.has("pressure")) out.pressure = readLinearSolver(s.map("pressure"), out.pressure);
+  if (s.has("momentum")) {
+    out.momentum = readLinearSolver(s.map("momentum"), out.momentum);
+    if (out.momentum.preconditioner != PreconditionerType::Jacobi)
+      s.map("momentum").fail("preconditioner",
+                             "must be jacobi (the momentum matrix is not symmetric)");
+  }
+  return out;
+}
+
+}  // namespace parcelflow::cfd

@@ -1,0 +1,37 @@
+#pragma once
+// Reads the gas part of case.yaml: the top-level keys `mesh`, `geometry`, `gas`, `boundaries`,
+// `inlet_regions` and `solver`. Other top-level keys (`coupling`, `output`, `time`, ...) belong to the
+// coupling layer and are left alone; inside the gas keys every unknown key, wrong type or out-of-range
+// value throws ConfigError naming the key path, the value and what is allowed.
+#include <yaml-cpp/yaml.h>
+
+#include "gas_settings.hpp"
+
+namespace parcelflow::cfd {
+
+class YamlSection;
+
+class GasConfig {
+ public:
+  // `root` is the parsed case.yaml (or any map holding the gas keys).
+  explicit GasConfig(const YAML::Node& root);
+  static GasConfig fromFile(const std::string& path);
+
+  const GasSettings& settings() const { return settings_; }
+
+  // Top-level keys read here; the coupling layer checks the remaining ones itself.
+  static const std::vector<std::string>& ownedTopLevelKeys();
+
+ private:
+  static MeshSettings readMesh(const YamlSection& s);
+  static Geometry readGeometry(const YAML::Node& root);
+  static Geometry readShapeList(const YamlSection& parent, const std::string& key);
+  static GasProperties readGas(const YamlSection& s);
+  static std::vector<BoundarySettings> readBoundaries(const YamlSection& s);
+  static std::vector<InletRegionSettings> readInletRegions(const YAML::Node& root);
+  static SolverSettings readSolver(const YamlSection& s);
+  static LinearSolverSettings readLinearSolver(const YamlSection& s, LinearSolverSettings fallback);
+  GasSettings settings_;
+};
+
+}  // namespace parcelflow::cfd

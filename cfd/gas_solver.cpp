@@ -1,0 +1,186 @@
+#include "gas_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "config_error.hpp"
+#include "internal_error.hpp"
+#include "mesh_builder.hpp"
+
+namespace parcelflow::cfd {
+
+GasSolver::GasSolver(const GasSettings& settings, MPI_Comm comm)
+    : GasSolver(settings,
+                std::make_shared<const Mesh>(MeshBuilder::build(settings.mesh, settings.geometry, comm))) {}
+
+GasSolver::GasSolver(const GasSettings& settings, std::shared_ptr<const Mesh> mesh)
+    : settings_(settings),
+      mesh_(std::move(mesh)),
+      rho_(settings.gas.density),
+      mu_(settings.gas.viscosity),
+      g_(settings.gas.gravity) {
+  const int nLocal = mesh_->nLocalCells();
+  alpha_.assign(nLocal, 1.0);
+  alphaOld_ = alpha_;
+  beta_.assign(nLocal, 0.0);
+  injection_.assign(nLocal, 0.0);
+  betaUs_.assign(nLocal, Vec3::Zero());
+  injectionMomentum_.assign(nLocal, Vec3::Zero());
+  U_.assign(nLocal, Vec3::Zero());
+  Uold_ = U_;
+  pRgh_.assign(nLocal, 0.0);
+  p_.assign(nLocal, 0.0);
+  gradPrgh_.assign(nLocal, Vec3::Zero());
+  gradP_.assign(nLocal, Vec3::Zero());
+  phi_.assign(mesh_->nInternalFaces(), 0.0);
+  phiB_.assign(mesh_->nBoundaryFaces(), 0.0);
+  setupBoundaries();
+  setupInletRegions();
+  initialiseHydrostatic();
+}
+
+void GasSolver::setupBoundaries() {
+  const Mesh& m = *mesh_;
+  patch_.assign(m.patchNames().size(), PatchCondition{});
+  bool haveOutlet = false;
+  for (const auto& bc : settings_.boundaries) {
+    const int id = m.patchId(bc.patch);
+    if (id < 0) {
+      std::string existing;
+      for (std::size_t p = 0; p < m.patchNames().size(); ++p)
+        if (m.patchGlobalFaces(static_cast<int>(p)) > 0)
+          existing += (existing.empty() ? "" : ", ") + m.patchNames()[p];
+      throw ConfigError("case.yaml: boundaries." + bc.patch +
+                        ": the mesh has no patch of that name; its patches are: " + existing);
+    }
+    patch_[id] = {bc.type, bc.superficialVelocity, bc.pressure, true};
+    haveOutlet = haveOutlet || bc.type == BoundaryType::PressureOutlet;
+  }
+  for (std::size_t p = 0; p < patch_.size(); ++p)
+    if (m.patchGlobalFaces(static_cast<int>(p)) > 0 && !patch_[p].defined)
+      throw ConfigError("case.yaml: boundaries: patch '" + m.patchNames()[p] +
+                        "' has no condition; give it type velocity_inlet, pressure_outlet or wall");
+  if (!haveOutlet)
+    throw ConfigError("case.yaml: boundaries: at least one patch must be a pressure_outlet "
+                      "(it fixes the pressure level and lets the gas leave)");
+  for (int b = 0; b < m.nBoundaryFaces(); ++b) {
+    const auto type = patch_[m.boundaryPatch(b)].type;
+    if (type == BoundaryType::VelocityInlet)
+      phiB_[b] = patch_[m.boundaryPatch(b)].superficialVelocity.dot(m.boundaryArea(b));
+    if (type == BoundaryType::FreeSlipWall) {
+      const Vec3 n = m.boundaryArea(b).cwiseAbs() / m.boundaryMagArea(b);
+      PARCELFLOW_CFD_ASSERT(n.maxCoeff() == 1.0, "free-slip walls need axis-aligned faces");
+    }
+  }
+}
+
+void GasSolver::setupInletRegions() {
+  const Mesh& m = *mesh_;
+  for (std::size_t r = 0; r < settings_.inletRegions.size(); ++r) {
+    const auto& region = settings_.inletRegions[r];
+    double volume = 0.0;
+    for (int c = 0; c < m.nOwnedCells(); ++c)
+      if (region.region.isFluid(m.cellCentre(c))) volume += m.cellVolume(c);
+    volume = m.sum(volume);
+    if (volume <= 0.0)
+      throw ConfigError("case.yaml: inlet_regions[" + std::to_string(r) + "].region (" +
+                        region.name + "): contains no fluid cell centre");
+    // The flow is spread uniformly over the region's volume, so it is injected exactly.
+    const double q = region.flowRate / volume;
+    for (int c = 0; c < m.nOwnedCells(); ++c)
+      if (region.region.isFluid(m.cellCentre(c))) {
+        injection_[c] += q;
+        injectionMomentum_[c] += q * region.velocity;
+      }
+  }
+}
+
+void GasSolver::initialiseHydrostatic() {
+  // p_rgh = p - rho g.x is uniform at rest; start from the outlet value so gas at rest stays exactly
+  // at rest (all outlet faces at one height give one value).
+  const Mesh& m = *mesh_;
+  double value = std::numeric_limits<double>::infinity();
+  for (int b = 0; b < m.nBoundaryFaces(); ++b) {
+    const auto& pc = patch_[m.boundaryPatch(b)];
+    if (pc.type == BoundaryType::PressureOutlet)
+      value = std::min(value, pc.pressure - rho_ * g_.dot(m.boundaryCentre(b)));
+  }
+  double global = 0.0;
+  MPI_Allreduce(&value, &global, 1, MPI_DOUBLE, MPI_MIN, m.comm());
+  pRef_ = global;
+  pRgh_.assign(m.nLocalCells(), 0.0);
+  gradPrgh_.assign(m.nLocalCells(), Vec3::Zero());
+  for (int c = 0; c < m.nLocalCells(); ++c) {
+    p_[c] = pRef_ + rho_ * g_.dot(m.cellCentre(c));
+    gradP_[c] = rho_ * g_;
+  }
+}
+
+void GasSolver::copyOwned(const ScalarField& in, ScalarField& out, const char* what) const {
+  const int nOwned = mesh_->nOwnedCells();
+  if (static_cast<int>(in.size()) != nOwned && static_cast<int>(in.size()) != mesh_->nLocalCells())
+    throw ConfigError(std::string("GasSolver: ") + what + " has " + std::to_string(in.size()) +
+                      " entries; expected nOwnedCells or nLocalCells");
+  std::copy(in.begin(), in.begin() + nOwned, out.begin());
+  mesh_->exchange(out);
+}
+
+void GasSolver::copyOwned(const VectorField& in, VectorField& out, const char* what) const {
+  const int nOwned = mesh_->nOwnedCells();
+  if (static_cast<int>(in.size()) != nOwned && static_cast<int>(in.size()) != mesh_->nLocalCells())
+    throw ConfigError(std::string("GasSolver: ") + what + " has " + std::to_string(in.size()) +
+                      " entries; expected nOwnedCells or nLocalCells");
+  std::copy(in.begin(), in.begin() + nOwned, out.begin());
+  mesh_->exchange(out);
+}
+
+void GasSolver::setGasFraction(const ScalarField& alphaG) {
+  copyOwned(alphaG, alpha_, "gas fraction");
+  for (int c = 0; c < mesh_->nOwnedCells(); ++c)
+    PARCELFLOW_CFD_ASSERT(alpha_[c] > 0.0 && alpha_[c] <= 1.0,
+                          "gas fraction outside (0, 1]: the coupling floor must prevent this");
+  // The first field given is the initial state; later ones are new time levels.
+  if (!gasFractionGiven_) alphaOld_ = alpha_;
+  gasFractionGiven_ = true;
+}
+
+void GasSolver::setDragCoefficient(const ScalarField& beta) {
+  copyOwned(beta, beta_, "drag coefficient");
+}
+
+void GasSolver::setDragSource(const VectorField& betaUs) {
+  copyOwned(betaUs, betaUs_, "drag source");
+}
+
+void GasSolver::setVelocity(const VectorField& u) {
+  copyOwned(u, U_, "velocity");
+  Uold_ = U_;
+}
+
+StepReport GasSolver::advance(double dt) {
+  PARCELFLOW_CFD_ASSERT(dt > 0.0, "time step must be positive");
+  report_ = StepReport{};
+  assembleMomentum(dt);
+  solveMomentum();
+  for (int corr = 0; corr < settings_.solver.pisoCorrectors; ++corr) correctPressure(dt, corr == 0);
+  finishStep(dt);
+  return report_;
+}
+
+double GasSolver::patchOutflow(const std::string& patch) const {
+  const int id = mesh_->patchId(patch);
+  if (id < 0) throw ConfigError("GasSolver::patchOutflow: no patch named '" + patch + "'");
+  double local = 0.0;
+  for (int b = 0; b < mesh_->nBoundaryFaces(); ++b)
+    if (mesh_->boundaryPatch(b) == id) local += phiB_[b];
+  return mesh_->sum(local);
+}
+
+double GasSolver::gasVolume() const {
+  double local = 0.0;
+  for (int c = 0; c < mesh_->nOwnedCells(); ++c) local += alpha_[c] * mesh_->cellVolume(c);
+  return mesh_->sum(local);
+}
+
+}  // namespace parcelflow::cfd

@@ -1,0 +1,113 @@
+#pragma once
+// The volume-averaged incompressible gas solver (see cfd/README.md for the equations and numerics).
+//
+// Interface for the coupling layer (all collective over the mesh communicator):
+//   GasSolver gas(GasConfig(root).settings(), comm);
+//   gas.setGasFraction(a_g);          // cell field, a_g = 1 - a_s at the new time level (the first
+//                                     // call sets the initial state; a_g = 1 until then)
+//   gas.setDragCoefficient(beta);     // cell field [kg/(m^3 s)], implicit part of B (u_s - u)
+//   gas.setDragSource(betaUs);        // cell vector field beta * u_s [N/m^3], explicit part
+//   StepReport r = gas.advance(dt);   // one implicit-Euler PISO step of fixed size dt
+//   gas.velocity(), gas.pressure(), gas.pressureGradient()   // cell-centred u (interstitial), p, grad p
+// Input fields may have nOwnedCells() or nLocalCells() entries; only owned entries are read and the
+// ghosts are filled by a halo exchange. Output fields have nLocalCells() entries with valid ghosts.
+// pressureGradient() is exactly the grad p used in the momentum equation (Gauss gradient of the
+// pressure minus the hydrostatic part, plus rho g), so forces on particles and gas balance.
+#include <memory>
+#include <string>
+
+#include "gas_settings.hpp"
+#include "krylov_solver.hpp"
+#include "ldu_matrix.hpp"
+#include "mesh.hpp"
+
+namespace parcelflow::cfd {
+
+struct StepReport {
+  double cfl = 0.0;                 // max over cells of 0.5 dt sum|phi_f| / (a_g V)
+  int momentumIterations = 0;       // BiCGStab iterations, summed over the 3 components
+  int pressureIterations = 0;       // PCG iterations, summed over the PISO correctors
+  int unconvergedSolves = 0;        // linear solves that stopped at max_iterations (never hidden)
+  double continuityError = 0.0;     // sum |cell continuity residual| / max(boundary + injected flow)
+  double boundaryOutflow = 0.0;     // net volumetric gas flow out through all patches [m^3/s]
+  double injectedFlow = 0.0;        // inlet regions [m^3/s]
+};
+
+class GasSolver {
+ public:
+  GasSolver(const GasSettings& settings, MPI_Comm comm);
+  // Builds on an existing mesh (must outlive the solver).
+  GasSolver(const GasSettings& settings, std::shared_ptr<const Mesh> mesh);
+
+  const Mesh& mesh() const { return *mesh_; }
+  const GasSettings& settings() const { return settings_; }
+
+  void setGasFraction(const ScalarField& alphaG);
+  void setDragCoefficient(const ScalarField& beta);
+  void setDragSource(const VectorField& betaUs);
+  void setVelocity(const VectorField& u);  // initial condition (interstitial)
+
+  StepReport advance(double dt);
+
+  const ScalarField& gasFraction() const { return alpha_; }
+  const VectorField& velocity() const { return U_; }
+  const ScalarField& pressure() const { return p_; }
+  const VectorField& pressureGradient() const { return gradP_; }
+  double time() const { return time_; }
+  const StepReport& lastReport() const { return report_; }
+
+  // Net outward volumetric gas flow (a_g u . S summed) through a named patch, global [m^3/s].
+  double patchOutflow(const std::string& patch) const;
+  // Gas volume sum a_g V over the mesh [m^3].
+  double gasVolume() const;
+
+ private:
+  struct PatchCondition {
+    BoundaryType type = BoundaryType::NoSlipWall;
+    Vec3 superficialVelocity = Vec3::Zero();
+    double pressure = 0.0;
+    bool defined = false;
+  };
+
+  void setupBoundaries();
+  void setupInletRegions();
+  void initialiseHydrostatic();
+  void copyOwned(const ScalarField& in, ScalarField& out, const char* what) const;
+  void copyOwned(const VectorField& in, VectorField& out, const char* what) const;
+
+  // gas_solver_momentum.cpp
+  VectorField boundaryVelocity() const;
+  ScalarField boundaryPressure() const;
+  void assembleMomentum(double dt);
+  void addBoundaryMomentum();
+  void addDeferredCorrection(const std::vector<Eigen::Matrix3d>& gradU);
+  void solveMomentum();
+  // gas_solver_pressure.cpp
+  void correctPressure(double dt, bool firstCorrector);
+  void finishStep(double dt);
+
+  GasSettings settings_;
+  std::shared_ptr<const Mesh> mesh_;
+  double rho_, mu_;
+  Vec3 g_;
+  std::vector<PatchCondition> patch_;
+  ScalarField alpha_, alphaOld_, beta_, injection_;
+  VectorField betaUs_, injectionMomentum_, U_, Uold_;
+  // p = pRef_ + pRgh_ + rho g.x: the solved part pRgh_ stays small next to an absolute outlet pressure
+  // (1e5 Pa), so tight solver tolerances still resolve the cell-to-cell differences that drive u.
+  double pRef_ = 0.0;
+  ScalarField pRgh_, p_;
+  VectorField gradPrgh_, gradP_;
+  ScalarField phi_, phiB_;  // internal (owner -> neighbour) and boundary (outward) volume fluxes
+  std::unique_ptr<LduMatrix> mom_;
+  // The pressure matrix and its preconditioner are the same for all PISO correctors of a step.
+  std::unique_ptr<LduMatrix> pEqn_;
+  std::unique_ptr<KrylovSolver> pSolver_;
+  VectorField bU_;                       // momentum source without the pressure gradient
+  std::array<ScalarField, 3> diagExtra_;  // per-component diagonal (free-slip normal components)
+  StepReport report_;
+  double time_ = 0.0;
+  bool gasFractionGiven_ = false;
+};
+
+}  // namespace parcelflow::cfd

@@ -1,0 +1,39 @@
+#pragma once
+// Distributed Krylov methods over LduMatrix with a block-Jacobi preconditioner: PCG for the symmetric
+// pressure equation, BiCGStab for the momentum components. Converged when the residual 2-norm is below
+// max(relTolerance * |b|, absTolerance); a solve that hits maxIterations is reported, not hidden.
+#include <memory>
+
+#include "block_jacobi_preconditioner.hpp"
+#include "gas_settings.hpp"
+#include "ldu_matrix.hpp"
+
+namespace parcelflow::cfd {
+
+struct SolveStats {
+  int iterations = 0;
+  double initialResidual = 0.0;  // |b - A x0| / |b|
+  double finalResidual = 0.0;    // |b - A x| / |b|
+  bool converged = true;
+};
+
+class KrylovSolver {
+ public:
+  // Factorises the preconditioner once; solve as many right-hand sides as needed with it. The
+  // matrix must outlive the solver and keep its coefficients.
+  KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& settings,
+               ScalarField extraDiag = {});
+  // x: local field (initial guess on owned cells, ghosts refreshed on return); b: owned right side.
+  SolveStats pcg(ScalarField& x, const ScalarField& b) const;
+  SolveStats bicgstab(ScalarField& x, const ScalarField& b) const;
+
+ private:
+  double dot(const ScalarField& a, const ScalarField& b) const;
+  void residual(ScalarField& x, const ScalarField& b, ScalarField& r) const;
+  const LduMatrix& matrix_;
+  LinearSolverSettings settings_;
+  ScalarField extraDiag_;
+  std::unique_ptr<BlockJacobiPreconditioner> precond_;
+};
+
+}  // namespace parcelflow::cfd

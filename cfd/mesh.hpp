@@ -1,0 +1,112 @@
+#pragma once
+// The local part of the face-based gas mesh on one rank.
+//
+// Interface for the coupling layer:
+//  - background(): the Cartesian background (origin, spacing, n per axis) the fluid cells are cut from;
+//  - localCellOfBackground(i, j, k): local index of the fluid cell (owned or ghost) at background index
+//    (i, j, k), or -1 if that cell is solid, outside the background or not present on this rank;
+//  - nOwnedCells(), nLocalCells() (= owned + ghosts); owned cells come first;
+//  - exchange(field): owners -> ghosts; reverseAdd(field): ghost contributions summed into owners,
+//    ghosts then zeroed. Ghost cells cover `ghostLayers` layers in the 26-neighbourhood (Chebyshev
+//    distance on the background), so a deposition kernel of that half-width stays inside them.
+// Geometry is stored per cell and per face (volumes, centres, area vectors), so cut cells can later
+// replace the staircase cells without changing the solver.
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cartesian_background.hpp"
+#include "halo.hpp"
+#include "types.hpp"
+
+namespace parcelflow::cfd {
+
+class Mesh {
+ public:
+  // A duplicate of the communicator given to MeshBuilder: the gas solver's halo messages and
+  // reductions never mix with the caller's.
+  MPI_Comm comm() const { return comm_; }
+  int rank() const { return rank_; }
+  int nRanks() const { return nRanks_; }
+
+  const CartesianBackground& background() const { return background_; }
+  int localCellOfBackground(int i, int j, int k) const {
+    return background_.inside(i, j, k) ? backgroundToLocal_[background_.index(i, j, k)] : -1;
+  }
+
+  int nOwnedCells() const { return nOwned_; }
+  int nLocalCells() const { return static_cast<int>(globalId_.size()); }
+  long nGlobalCells() const { return nGlobal_; }
+  int ghostLayers() const { return ghostLayers_; }
+  // Global fluid-cell id (ordered like the background's linear index), the same on every rank count.
+  long globalId(int cell) const { return globalId_[cell]; }
+  long backgroundIndex(int cell) const { return backgroundIndex_[cell]; }
+  // 0 for owned cells, 1..ghostLayers for ghosts.
+  int ghostLayer(int cell) const { return ghostLayer_[cell]; }
+  const Vec3& cellCentre(int cell) const { return cellCentre_[cell]; }
+  double cellVolume(int cell) const { return cellVolume_[cell]; }
+
+  // Internal faces: every face with at least one owned cell. owner < neighbour in global id; the area
+  // vector points from owner to neighbour; weight = interpolation weight of the owner value.
+  int nInternalFaces() const { return static_cast<int>(faceOwner_.size()); }
+  int faceOwner(int f) const { return faceOwner_[f]; }
+  int faceNeighbour(int f) const { return faceNeighbour_[f]; }
+  const Vec3& faceArea(int f) const { return faceArea_[f]; }
+  double faceMagArea(int f) const { return faceMagArea_[f]; }
+  const Vec3& faceCentre(int f) const { return faceCentre_[f]; }
+  double faceWeight(int f) const { return faceWeight_[f]; }
+  double faceDelta(int f) const { return faceDelta_[f]; }  // owner-to-neighbour centre distance
+
+  // Boundary faces of owned cells; area vector points out of the domain.
+  int nBoundaryFaces() const { return static_cast<int>(boundaryCell_.size()); }
+  int boundaryCell(int b) const { return boundaryCell_[b]; }
+  const Vec3& boundaryArea(int b) const { return boundaryArea_[b]; }
+  double boundaryMagArea(int b) const { return boundaryMagArea_[b]; }
+  const Vec3& boundaryCentre(int b) const { return boundaryCentre_[b]; }
+  double boundaryDelta(int b) const { return boundaryDelta_[b]; }  // cell centre to face centre
+  int boundaryPatch(int b) const { return boundaryPatch_[b]; }
+
+  // Patches are global: the same names and ids on every rank; a patch may have no face on a rank.
+  const std::vector<std::string>& patchNames() const { return patchNames_; }
+  int patchId(const std::string& name) const;  // -1 when no face of the whole mesh has that name
+  long patchGlobalFaces(int patch) const { return patchGlobalFaces_[patch]; }
+
+  const Halo& halo() const { return halo_; }
+  void exchange(ScalarField& field) const { halo_.exchange(field); }
+  void exchange(VectorField& field) const { halo_.exchange(field); }
+  void reverseAdd(ScalarField& field) const { halo_.reverseAdd(field); }
+  void reverseAdd(VectorField& field) const { halo_.reverseAdd(field); }
+
+  // Global sums over owned cells.
+  double sumOwned(const ScalarField& field) const;
+  double sum(double localValue) const;
+  double max(double localValue) const;
+
+ private:
+  friend class MeshBuilder;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  std::shared_ptr<MPI_Comm> commOwner_;  // frees the duplicate with the last copy of the mesh
+  int rank_ = 0, nRanks_ = 1;
+  CartesianBackground background_;
+  std::vector<int> backgroundToLocal_;
+  int nOwned_ = 0;
+  long nGlobal_ = 0;
+  int ghostLayers_ = 0;
+  std::vector<long> globalId_, backgroundIndex_;
+  std::vector<int> ghostLayer_;
+  std::vector<Vec3> cellCentre_;
+  std::vector<double> cellVolume_;
+  std::vector<int> faceOwner_, faceNeighbour_;
+  std::vector<Vec3> faceArea_, faceCentre_;
+  std::vector<double> faceMagArea_, faceWeight_, faceDelta_;
+  std::vector<int> boundaryCell_, boundaryPatch_;
+  std::vector<Vec3> boundaryArea_, boundaryCentre_;
+  std::vector<double> boundaryMagArea_, boundaryDelta_;
+  std::vector<std::string> patchNames_;
+  std::vector<long> patchGlobalFaces_;
+  Halo halo_;
+};
+
+}  // namespace parcelflow::cfd

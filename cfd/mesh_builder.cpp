@@ -1,0 +1,229 @@
+#include "mesh_builder.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "config_error.hpp"
+#include "internal_error.hpp"
+#include "partitioner.hpp"
+
+namespace parcelflow::cfd {
+
+namespace {
+const char* kSideNames[3][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}, {"zmin", "zmax"}};
+}  // namespace
+
+Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, MPI_Comm comm) {
+  Mesh mesh;
+  MPI_Comm_dup(comm, &mesh.comm_);
+  mesh.commOwner_ = std::shared_ptr<MPI_Comm>(new MPI_Comm(mesh.comm_), [](MPI_Comm* c) {
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (!finalized) MPI_Comm_free(c);
+    delete c;
+  });
+  comm = mesh.comm_;
+  MPI_Comm_rank(comm, &mesh.rank_);
+  MPI_Comm_size(comm, &mesh.nRanks_);
+  mesh.background_ = CartesianBackground(settings.origin, settings.lengths, settings.cells);
+  const auto& bg = mesh.background_;
+  const long nBg = bg.size();
+
+  // Fluid selection (cell-centre inside) and global numbering in background order.
+  std::vector<int> globalOfBackground(nBg, -1);
+  std::vector<long> backgroundOfGlobal;
+  for (long b = 0; b < nBg; ++b) {
+    const auto ijk = bg.ijk(b);
+    if (geometry.isFluid(bg.centre(ijk[0], ijk[1], ijk[2]))) {
+      globalOfBackground[b] = static_cast<int>(backgroundOfGlobal.size());
+      backgroundOfGlobal.push_back(b);
+    }
+  }
+  const int nGlobal = static_cast<int>(backgroundOfGlobal.size());
+  if (nGlobal == 0) throw ConfigError("case.yaml: geometry: selects no fluid cell of the mesh");
+  mesh.nGlobal_ = nGlobal;
+
+  // Face graph and weights for METIS.
+  std::vector<int> xadj{0}, adjncy, weights(nGlobal, 1);
+  for (int g = 0; g < nGlobal; ++g) {
+    const auto ijk = bg.ijk(backgroundOfGlobal[g]);
+    for (int d = 0; d < 3; ++d)
+      for (int s = -1; s <= 1; s += 2) {
+        auto n = ijk;
+        n[d] += s;
+        if (bg.inside(n[0], n[1], n[2])) {
+          const int ng = globalOfBackground[bg.index(n[0], n[1], n[2])];
+          if (ng >= 0) adjncy.push_back(ng);
+        }
+      }
+    xadj.push_back(static_cast<int>(adjncy.size()));
+    const Vec3 x = bg.centre(ijk[0], ijk[1], ijk[2]);
+    for (const auto& w : settings.partitionWeights)
+      if (w.region.contains(x)) weights[g] = w.weight;
+  }
+  // Global fluid-cell id -> owner rank.
+  const std::vector<int> part = Partitioner::partition(comm, xadj, adjncy, weights);
+
+  for (int g = 0; g < nGlobal; ++g)
+    if (part[g] == mesh.rank_) {
+      mesh.globalId_.push_back(g);
+      mesh.ghostLayer_.push_back(0);
+    }
+  mesh.nOwned_ = static_cast<int>(mesh.globalId_.size());
+  const double haveCells = mesh.nOwned_ > 0 ? 1.0 : 0.0;
+  double allHave = 0.0;
+  MPI_Allreduce(&haveCells, &allHave, 1, MPI_DOUBLE, MPI_MIN, comm);
+  if (allHave < 1.0) throw ConfigError("the partition left an MPI rank without cells: use fewer ranks");
+
+  mesh.backgroundToLocal_.assign(nBg, -1);
+  for (int c = 0; c < mesh.nOwned_; ++c)
+    mesh.backgroundToLocal_[backgroundOfGlobal[mesh.globalId_[c]]] = c;
+  addGhostLayers(mesh, globalOfBackground, backgroundOfGlobal, settings.ghostLayers);
+  for (int c = 0; c < mesh.nLocalCells(); ++c) {
+    const long b = backgroundOfGlobal[mesh.globalId_[c]];
+    const auto ijk = bg.ijk(b);
+    mesh.backgroundIndex_.push_back(b);
+    mesh.cellCentre_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
+    mesh.cellVolume_.push_back(bg.cellVolume());
+  }
+  buildHalo(mesh, part);
+  buildFaces(mesh, geometry);
+  return mesh;
+}
+
+void MeshBuilder::addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBackground,
+                                 const std::vector<long>& backgroundOfGlobal, int layers) {
+  const auto& bg = mesh.background_;
+  mesh.ghostLayers_ = layers;
+  int begin = 0;
+  for (int layer = 1; layer <= layers; ++layer) {
+    const int end = mesh.nLocalCells();
+    std::vector<int> added;  // global ids of the new layer
+    for (int c = begin; c < end; ++c) {
+      const auto ijk = bg.ijk(backgroundOfGlobal[mesh.globalId_[c]]);
+      for (int dk = -1; dk <= 1; ++dk)
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const int i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
+            if (!bg.inside(i, j, k)) continue;
+            const long b = bg.index(i, j, k);
+            const int g = globalOfBackground[b];
+            if (g < 0 || mesh.backgroundToLocal_[b] != -1) continue;  // solid, present or taken
+            mesh.backgroundToLocal_[b] = -2;  // mark as taken for this layer
+            added.push_back(g);
+          }
+    }
+    std::sort(added.begin(), added.end());
+    for (int g : added) {
+      mesh.backgroundToLocal_[backgroundOfGlobal[g]] = mesh.nLocalCells();
+      mesh.globalId_.push_back(g);
+      mesh.ghostLayer_.push_back(layer);
+    }
+    begin = end;
+  }
+}
+
+void MeshBuilder::buildHalo(Mesh& mesh, const std::vector<int>& part) {
+  // Each rank asks the owners of its ghosts for them, in its ghost order.
+  std::map<int, std::vector<int>> recvByRank;  // owner rank -> local ghost cells
+  for (int c = mesh.nOwned_; c < mesh.nLocalCells(); ++c)
+    recvByRank[part[mesh.globalId_[c]]].push_back(c);
+  const int nRanks = mesh.nRanks_;
+  std::vector<int> requestCount(nRanks, 0), incomingCount(nRanks, 0);
+  for (const auto& [r, cells] : recvByRank) requestCount[r] = static_cast<int>(cells.size());
+  MPI_Alltoall(requestCount.data(), 1, MPI_INT, incomingCount.data(), 1, MPI_INT, mesh.comm_);
+  std::vector<int> sendDispl(nRanks + 1, 0), recvDispl(nRanks + 1, 0);
+  for (int r = 0; r < nRanks; ++r) {
+    sendDispl[r + 1] = sendDispl[r] + requestCount[r];
+    recvDispl[r + 1] = recvDispl[r] + incomingCount[r];
+  }
+  std::vector<int> requested(sendDispl[nRanks]), incoming(recvDispl[nRanks]);
+  for (const auto& [r, cells] : recvByRank)
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      requested[sendDispl[r] + i] = static_cast<int>(mesh.globalId_[cells[i]]);
+  MPI_Alltoallv(requested.data(), requestCount.data(), sendDispl.data(), MPI_INT, incoming.data(),
+                incomingCount.data(), recvDispl.data(), MPI_INT, mesh.comm_);
+  std::vector<Halo::Neighbour> neighbours;
+  for (int r = 0; r < nRanks; ++r) {
+    if (requestCount[r] == 0 && incomingCount[r] == 0) continue;
+    Halo::Neighbour nb;
+    nb.rank = r;
+    if (recvByRank.count(r)) nb.recv = recvByRank[r];
+    for (int i = recvDispl[r]; i < recvDispl[r + 1]; ++i) {
+      // Owned global ids are sorted, so a binary search finds the local index.
+      const auto begin = mesh.globalId_.begin(), end = begin + mesh.nOwned_;
+      const auto it = std::lower_bound(begin, end, static_cast<long>(incoming[i]));
+      const int local = (it != end && *it == incoming[i]) ? static_cast<int>(it - begin) : -1;
+      PARCELFLOW_CFD_ASSERT(local >= 0 && local < mesh.nOwned_, "halo request for a cell not owned");
+      nb.send.push_back(local);
+    }
+    neighbours.push_back(std::move(nb));
+  }
+  mesh.halo_ = Halo(mesh.comm_, mesh.nOwned_, mesh.nLocalCells(), std::move(neighbours));
+}
+
+void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
+  const auto& bg = mesh.background_;
+  const Vec3 h = bg.spacing();
+  // Patch list, identical on every rank: box sides, the default wall patch, named cut-outs.
+  std::vector<std::string>& names = mesh.patchNames_;
+  for (int d = 0; d < 3; ++d)
+    for (int s = 0; s < 2; ++s) names.push_back(kSideNames[d][s]);
+  names.push_back(Geometry::defaultWallPatch);
+  for (const auto& item : geometry.items())
+    if (!item.patch.empty() && std::find(names.begin(), names.end(), item.patch) == names.end())
+      names.push_back(item.patch);
+  std::vector<long> localCount(names.size(), 0);
+
+  for (int c = 0; c < mesh.nOwned_; ++c) {
+    const auto ijk = bg.ijk(mesh.backgroundIndex_[c]);
+    for (int d = 0; d < 3; ++d) {
+      const double area = h.prod() / h[d];
+      Vec3 e = Vec3::Zero();
+      e[d] = 1.0;
+      for (int s = -1; s <= 1; s += 2) {
+        auto n = ijk;
+        n[d] += s;
+        const Vec3 faceCentre = mesh.cellCentre_[c] + 0.5 * s * h[d] * e;
+        std::string patch;
+        if (!bg.inside(n[0], n[1], n[2])) {
+          patch = kSideNames[d][s > 0 ? 1 : 0];
+        } else {
+          const int nb = mesh.localCellOfBackground(n[0], n[1], n[2]);
+          const bool solid = nb < 0;
+          if (solid) {
+            patch = geometry.wallPatchAt(bg.centre(n[0], n[1], n[2]));
+          } else {
+            // Owner is the lower global id, i.e. the -d side. Owned pairs are added once, from the
+            // owner; faces to ghosts are added from the owned side.
+            const bool ghost = nb >= mesh.nOwned_;
+            if (s < 0 && !ghost) continue;
+            const int owner = s > 0 ? c : nb, neighbour = s > 0 ? nb : c;
+            mesh.faceOwner_.push_back(owner);
+            mesh.faceNeighbour_.push_back(neighbour);
+            mesh.faceArea_.push_back(area * e);
+            mesh.faceMagArea_.push_back(area);
+            mesh.faceCentre_.push_back(faceCentre);
+            mesh.faceWeight_.push_back(0.5);
+            mesh.faceDelta_.push_back(h[d]);
+            continue;
+          }
+        }
+        const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
+        PARCELFLOW_CFD_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
+        mesh.boundaryCell_.push_back(c);
+        mesh.boundaryArea_.push_back(s * area * e);
+        mesh.boundaryMagArea_.push_back(area);
+        mesh.boundaryCentre_.push_back(faceCentre);
+        mesh.boundaryDelta_.push_back(0.5 * h[d]);
+        mesh.boundaryPatch_.push_back(pid);
+        ++localCount[pid];
+      }
+    }
+  }
+  mesh.patchGlobalFaces_.assign(names.size(), 0);
+  MPI_Allreduce(localCount.data(), mesh.patchGlobalFaces_.data(), static_cast<int>(names.size()),
+                MPI_LONG, MPI_SUM, mesh.comm_);
+}
+
+}  // namespace parcelflow::cfd

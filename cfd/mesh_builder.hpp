@@ -1,0 +1,23 @@
+#pragma once
+// Builds the local Mesh of every rank (collective over `comm`): selects the fluid cells of the
+// Cartesian background with the geometry, partitions them with METIS, adds the ghost layers, the
+// faces, the named boundary patches and the halo pattern.
+#include <mpi.h>
+
+#include "gas_settings.hpp"
+#include "mesh.hpp"
+
+namespace parcelflow::cfd {
+
+class MeshBuilder {
+ public:
+  static Mesh build(const MeshSettings& settings, const Geometry& geometry, MPI_Comm comm);
+
+ private:
+  static void addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBackground,
+                             const std::vector<long>& backgroundOfGlobal, int layers);
+  static void buildHalo(Mesh& mesh, const std::vector<int>& part);
+  static void buildFaces(Mesh& mesh, const Geometry& geometry);
+};
+
+}  // namespace parcelflow::cfd

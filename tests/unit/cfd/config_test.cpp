@@ -1,0 +1,170 @@
+// GasConfig: a complete gas section parses; unknown keys, wrong types and out-of-range values throw
+// ConfigError naming the key path, the value and what is allowed.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <string>
+
+#include "cfd/config_error.hpp"
+#include "cfd/gas_config.hpp"
+#include "cfd/gas_solver.hpp"
+
+using namespace parcelflow::cfd;
+
+namespace {
+const char* kValid = R"(
+mesh:
+  origin: [0, 0, 0]
+  lengths: [0.2, 0.2, 1.0]
+  cells: [4, 4, 20]
+  ghost_layers: 3
+  partition_weights:
+    - region: {box: {min: [0, 0, 0], max: [0.2, 0.2, 0.5]}}
+      weight: 4
+geometry:
+  - shape: {cylinder: {center: [0.1, 0.1], radius: 0.1, zmin: 0, zmax: 0.8}}
+  - shape: {cylinder: {center: [0.1, 0.1], radius: 0.04, zmin: 0.8, zmax: 1.0}}
+  - op: cut
+    shape: {box: {min: [0.05, 0.05, 0.3], max: [0.15, 0.15, 0.36]}}
+    patch: baffle
+gas:
+  density: 1.2
+  viscosity: 1.8e-5
+  gravity: [0, 0, -9.81]
+boundaries:
+  zmin: {type: velocity_inlet, superficial_velocity: [0, 0, 0.1]}
+  zmax: {type: pressure_outlet, pressure: 1.0e5}
+  walls: {type: wall, slip: no_slip}
+  xmin: {type: wall}
+  xmax: {type: wall}
+  ymin: {type: wall}
+  ymax: {type: wall}
+  baffle: {type: wall, slip: free_slip}
+inlet_regions:
+  - name: sparger
+    region:
+      - shape: {cylinder: {center: [0.1, 0.1], radius: 0.08, zmin: 0.05, zmax: 0.1}}
+      - op: cut
+        shape: {cylinder: {center: [0.1, 0.1], radius: 0.05, zmin: 0.0, zmax: 0.2}}
+    flow_rate: 1.0e-3
+    velocity: [0, 0, -1]
+solver:
+  piso_correctors: 3
+  convection: upwind
+  pressure: {tolerance: 1.0e-10, max_iterations: 500, preconditioner: block_cholesky}
+  momentum: {tolerance: 1.0e-9}
+coupling: {anything: the coupling layer checks this}
+)";
+
+// Parses kValid with one line replaced (or added) and returns the ConfigError message ("" if none).
+std::string errorOf(const std::string& yaml) {
+  try {
+    GasConfig config(YAML::Load(yaml));
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replaced(const std::string& from, const std::string& to) {
+  std::string text = kValid;
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return text.replace(pos, from.size(), to);
+}
+
+void expectError(const std::string& message, const std::vector<std::string>& parts) {
+  ASSERT_FALSE(message.empty()) << "no ConfigError thrown";
+  for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message;
+}
+}  // namespace
+
+TEST(GasConfig, ValidFileParses) {
+  const GasConfig config(YAML::Load(kValid));
+  const auto& s = config.settings();
+  EXPECT_EQ(s.mesh.cells[2], 20);
+  EXPECT_EQ(s.mesh.ghostLayers, 3);
+  EXPECT_EQ(s.mesh.partitionWeights.size(), 1u);
+  EXPECT_EQ(s.geometry.items().size(), 3u);
+  EXPECT_DOUBLE_EQ(s.gas.viscosity, 1.8e-5);
+  EXPECT_EQ(s.boundaries.size(), 8u);
+  EXPECT_EQ(s.inletRegions.size(), 1u);
+  EXPECT_TRUE(s.inletRegions[0].region.isFluid(Vec3(0.1 + 0.06, 0.1, 0.07)));
+  EXPECT_FALSE(s.inletRegions[0].region.isFluid(Vec3(0.1, 0.1, 0.07)));
+  EXPECT_EQ(s.solver.pisoCorrectors, 3);
+  EXPECT_EQ(s.solver.convection, ConvectionScheme::Upwind);
+  EXPECT_EQ(s.solver.pressure.preconditioner, PreconditionerType::BlockCholesky);
+  // The geometry: column, exit tube, baffle cut out.
+  EXPECT_TRUE(s.geometry.isFluid(Vec3(0.1, 0.1, 0.9)));
+  EXPECT_FALSE(s.geometry.isFluid(Vec3(0.01, 0.01, 0.9)));
+  EXPECT_FALSE(s.geometry.isFluid(Vec3(0.1, 0.1, 0.32)));
+  EXPECT_EQ(s.geometry.wallPatchAt(Vec3(0.1, 0.1, 0.32)), "baffle");
+}
+
+TEST(GasConfig, UnknownKeysAreNamed) {
+  expectError(errorOf(replaced("  viscosity: 1.8e-5", "  viscosty: 1.8e-5")),
+              {"unknown key gas.viscosty", "viscosity"});
+  expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layer: 3")),
+              {"mesh.ghost_layer", "ghost_layers"});
+  expectError(errorOf(replaced("  convection: upwind", "  convection: upwind\n  relax: 0.7")),
+              {"solver.relax"});
+  expectError(errorOf(replaced("{type: wall, slip: no_slip}", "{type: wall, slipp: no_slip}")),
+              {"boundaries.walls.slipp"});
+}
+
+TEST(GasConfig, WrongTypesAreNamed) {
+  expectError(errorOf(replaced("  density: 1.2", "  density: heavy")),
+              {"gas.density", "heavy", "a number in (0, 10000]"});
+  expectError(errorOf(replaced("  cells: [4, 4, 20]", "  cells: [4, 4]")),
+              {"mesh.cells", "a list of 3 integers"});
+  expectError(errorOf(replaced("  gravity: [0, 0, -9.81]", "  gravity: down")),
+              {"gas.gravity", "list of 3 numbers"});
+  expectError(errorOf(replaced("{box: {min: [0, 0, 0]", "{sphere: {min: [0, 0, 0]")),
+              {"partition_weights[0].region.sphere", "box, cylinder"});
+}
+
+TEST(GasConfig, OutOfRangeValuesAreNamed) {
+  expectError(errorOf(replaced("  viscosity: 1.8e-5", "  viscosity: -1")),
+              {"gas.viscosity = -1", "must be a number in (0, 1000]"});
+  expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layers: 0")),
+              {"mesh.ghost_layers = 0", "[1, 5]"});
+  expectError(errorOf(replaced("  convection: upwind", "  convection: quick")),
+              {"solver.convection = quick", "upwind, limited_linear_upwind"});
+  expectError(errorOf(replaced("type: velocity_inlet,", "type: inlet,")),
+              {"boundaries.zmin.type = inlet", "velocity_inlet, pressure_outlet, wall"});
+  expectError(errorOf(replaced("radius: 0.04,", "radius: -0.04,")), {"geometry[1].shape.cylinder.radius"});
+  expectError(errorOf(replaced("    flow_rate: 1.0e-3", "    flow_rate: 0")),
+              {"inlet_regions[0].flow_rate = 0", "> 0"});
+  expectError(errorOf(replaced("momentum: {tolerance: 1.0e-9}", "momentum: {preconditioner: block_ic}")),
+              {"solver.momentum.preconditioner", "jacobi"});
+  expectError(errorOf(replaced("min: [0, 0, 0], max: [0.2, 0.2, 0.5]", "min: [0, 0, 0], max: [0.2, 0, 0.5]")),
+              {"max", "larger than min"});
+}
+
+TEST(GasConfig, PatchesAreCheckedAgainstTheMesh) {
+  const std::string noBaffle = replaced("  baffle: {type: wall, slip: free_slip}\n", "  ghost: {type: wall}\n");
+  try {
+    GasSolver gas(GasConfig(YAML::Load(noBaffle)).settings(), MPI_COMM_WORLD);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("boundaries.ghost"), std::string::npos) << e.what();
+  }
+  const std::string missing = replaced("  baffle: {type: wall, slip: free_slip}\n", "");
+  try {
+    GasSolver gas(GasConfig(YAML::Load(missing)).settings(), MPI_COMM_WORLD);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("patch 'baffle' has no condition"), std::string::npos)
+        << e.what();
+  }
+  const std::string noOutlet = replaced("{type: pressure_outlet, pressure: 1.0e5}", "{type: wall}");
+  try {
+    GasSolver gas(GasConfig(YAML::Load(noOutlet)).settings(), MPI_COMM_WORLD);
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("pressure_outlet"), std::string::npos) << e.what();
+  }
+  // The valid file builds a solver.
+  GasSolver gas(GasConfig(YAML::Load(kValid)).settings(), MPI_COMM_WORLD);
+  EXPECT_GT(gas.mesh().nGlobalCells(), 0);
+}
