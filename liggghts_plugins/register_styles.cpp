@@ -1,10 +1,26 @@
 #include "register_styles.h"
 
+#include "fix_map_access.h"
+#include "fix_parcel.h"
+#include "fix_parcel_implicit_drag.h"
 #include "lammps.h"
-#include "modify.h"
 
 namespace parcelflow::plugins {
+namespace {
 
-void register_styles(LAMMPS_NS::LAMMPS* /*lmp*/) {}
+template <class T>
+LAMMPS_NS::Fix* create_fix(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg)
+{
+  return new T(lmp, narg, arg);
+}
+
+}  // namespace
+
+void register_styles(LAMMPS_NS::LAMMPS* lmp)
+{
+  auto& fixes = fix_map(lmp);
+  fixes["parcel"] = &create_fix<FixParcel>;
+  fixes["parcel/implicit_drag"] = &create_fix<FixParcelImplicitDrag>;
+}
 
 }  // namespace parcelflow::plugins

@@ -1,0 +1,122 @@
+#include "contact_scaling.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "fix_property_global.h"
+#include "fix_wall_gran.h"
+#include "force.h"
+#include "lammps.h"
+#include "modify.h"
+#include "pair_gran.h"
+#include "parcel_math.h"
+
+using namespace LAMMPS_NS;
+
+namespace parcelflow::plugins {
+
+std::string ContactScaling::apply(LAMMPS* lmp, double l, const char* caller)
+{
+  undo(lmp);
+  HookeCoefficients unit;
+  unit.kn = unit.kt = unit.gamman = unit.gammat = 1.0;
+  const HookeCoefficients rel = scale_linear(unit, l);
+  unit.absolute_damping = true;
+  const HookeCoefficients rel_abs = scale_linear(unit, l);
+  const std::vector<std::pair<std::string, double>> factors = {
+      {"kn", rel.kn},         {"kt", rel.kt},         {"gamman", rel.gamman},
+      {"gammat", rel.gammat}, {"gamman_abs", rel_abs.gamman}, {"gammat_abs", rel_abs.gammat}};
+  for (const auto& [name, factor] : factors) {
+    auto* pg = dynamic_cast<FixPropertyGlobal*>(lmp->modify->find_fix_property(
+        name.c_str(), "property/global", "peratomtypepair", 0, 0, caller, false));
+    if (!pg) continue;
+    ScaledProperty sp;
+    sp.name = name;
+    sp.fix_id = pg->id;
+    sp.fix = pg;
+    sp.factor = factor;
+    const int nvalues = pg->size_array_rows * pg->size_array_cols;
+    double* values = const_cast<double*>(pg->get_values());  // the fix owns a plain malloc'd array
+    for (int v = 0; v < nvalues; ++v) {
+      sp.original.push_back(values[v]);
+      values[v] *= factor;
+      sp.scaled.push_back(values[v]);
+    }
+    scaled_.push_back(sp);
+  }
+  auto has = [&](const char* name) {
+    return std::any_of(scaled_.begin(), scaled_.end(), [&](const ScaledProperty& s) { return s.name == name; });
+  };
+  if (!has("kn") || !(has("gamman") || has("gamman_abs"))) {
+    undo(lmp);
+    return "fix parcel: scaling linear scales model hooke/stiffness and needs 'fix property/global kn "
+           "peratomtypepair ...' and 'gamman' (or 'gamman_abs') defined BEFORE fix parcel";
+  }
+  return "";
+}
+
+void ContactScaling::undo(LAMMPS* lmp)
+{
+  for (ScaledProperty& sp : scaled_) {
+    const int k = lmp->modify->find_fix(sp.fix_id.c_str());
+    if (k < 0 || lmp->modify->fix[k] != sp.fix) continue;  // the fix was replaced: nothing of ours is left
+    double* values = const_cast<double*>(sp.fix->get_values());
+    if (!std::equal(sp.scaled.begin(), sp.scaled.end(), values)) continue;
+    std::copy(sp.original.begin(), sp.original.end(), values);
+  }
+  scaled_.clear();
+}
+
+std::string ContactScaling::check_intact(LAMMPS* lmp, const char* fix_id) const
+{
+  for (const ScaledProperty& sp : scaled_) {
+    const int k = lmp->modify->find_fix(sp.fix_id.c_str());
+    const bool intact = k >= 0 && lmp->modify->fix[k] == sp.fix &&
+                        std::equal(sp.scaled.begin(), sp.scaled.end(), sp.fix->get_values());
+    if (!intact)
+      return "fix parcel: fix property/global " + sp.name + " (ID " + sp.fix_id + ") was redefined after fix " +
+             fix_id + " scaled it; define the contact coefficients once, before fix parcel";
+  }
+  return "";
+}
+
+std::string ContactScaling::describe() const
+{
+  std::ostringstream out;
+  out.precision(6);
+  for (const ScaledProperty& sp : scaled_) {
+    out << "  " << sp.name << " (fix " << sp.fix_id << ", x " << sp.factor << "):";
+    for (std::size_t v = 0; v < sp.scaled.size(); ++v) out << " " << sp.original[v] << " -> " << sp.scaled[v];
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string ContactScaling::check_contact_models(LAMMPS* lmp)
+{
+  auto check = [](auto* model, const std::string& where) -> std::string {
+    if (!model->contact_match("normal", "hooke/stiffness"))
+      return "fix parcel: scaling linear needs model hooke/stiffness, but " + where +
+             " uses another normal model; allowed: model hooke/stiffness (for hertz with unchanged material "
+             "constants use scaling none)";
+    if (!model->contact_match("cohesion", "off"))
+      return "fix parcel: scaling linear cannot scale a cohesion model (" + where + "); allowed: cohesion off";
+    if (!model->contact_match("rolling_friction", "off"))
+      return "fix parcel: scaling linear cannot scale a rolling friction model (" + where +
+             "); allowed: rolling_friction off";
+    return "";
+  };
+  if (lmp->force->pair) {
+    auto* pg = dynamic_cast<PairGran*>(lmp->force->pair);
+    if (!pg)
+      return std::string("fix parcel: scaling linear needs pair_style gran, got pair_style ") +
+             lmp->force->pair_style;
+    if (std::string msg = check(pg, "pair_style gran"); !msg.empty()) return msg;
+  }
+  for (int k = 0; k < lmp->modify->nfix; ++k)
+    if (auto* wall = dynamic_cast<FixWallGran*>(lmp->modify->fix[k]))
+      if (std::string msg = check(wall, std::string("fix ") + wall->id); !msg.empty()) return msg;
+  return "";
+}
+
+}  // namespace parcelflow::plugins

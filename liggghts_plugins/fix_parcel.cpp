@@ -1,0 +1,316 @@
+#include "fix_parcel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <sstream>
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "parcel_math.h"
+
+using namespace LAMMPS_NS;
+using namespace LAMMPS_NS::FixConst;
+
+namespace parcelflow::plugins {
+namespace {
+
+constexpr double kDiameterTolerance = 1e-6;  // relative; inserted diameter vs. parcel diameter D
+constexpr int kRestartVersion = 1;
+
+std::vector<std::string> settings_args(int narg, char** arg)
+{
+  std::vector<std::string> args;
+  for (int i = 3; i < narg; ++i) args.emplace_back(arg[i]);
+  return args;
+}
+
+}  // namespace
+
+FixParcel::FixParcel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
+{
+  try {
+    settings_ = parse_parcel_settings(settings_args(narg, arg));
+  } catch (const ArgumentError& e) {
+    fail(e.what());
+  }
+  if (!atom->radius_flag || !atom->rmass_flag)
+    fail("fix parcel: needs per-atom radius and mass (atom_style sphere or granular)");
+  if (!atom->tag_enable) fail("fix parcel: needs atom IDs (atom_modify id yes)");
+
+  needs_sequence_ = settings_.mode == ParcelMode::ConstantDiameter && settings_.classes.size() > 1;
+  if (needs_sequence_) {
+    std::vector<double> fractions;
+    for (const SizeClass& c : settings_.classes) fractions.push_back(c.mass_fraction);
+    sequence_ = std::make_unique<SizeClassSequence>(fractions, settings_.seed);
+  }
+
+  peratom_flag = 1;
+  size_peratom_cols = NCOLUMNS;
+  peratom_freq = 1;
+  create_attribute = 1;  // set_arrays() for atoms created later, and for all atoms at the first setup
+  restart_global = 1;
+  restart_peratom = 1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);  // grow, copy, exchange
+  atom->add_callback(1);  // restart
+  // Atoms that exist now get their parcel values at the first setup (Modify::setup calls set_arrays for
+  // the group, unless a restart file restored them), so a later `set ... diameter` is taken into account.
+  for (int i = 0; i < atom->nlocal; ++i) {
+    data_[i][DP] = 2.0 * atom->radius[i];
+    data_[i][NP] = 1.0;
+  }
+}
+
+FixParcel::~FixParcel()
+{
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(data_);
+}
+
+void FixParcel::fail(const std::string& msg)
+{
+  error->all(FLERR, msg.c_str());
+  throw ArgumentError(msg);  // not reached: error->all ends the program
+}
+
+int FixParcel::setmask() { return needs_sequence_ ? PRE_FORCE : 0; }
+
+// ------------------------------------------------------------------ per-atom values
+
+void FixParcel::assign(int i)
+{
+  const double diameter = 2.0 * atom->radius[i];
+  double* d = data_[i];
+  if (!(atom->mask[i] & groupbit)) {  // not a parcel of this fix: a plain sphere
+    d[DP] = diameter;
+    d[NP] = 1.0;
+    return;
+  }
+  if (settings_.mode == ParcelMode::ConstantNp) {
+    d[NP] = settings_.np;
+    d[DP] = particle_diameter(diameter, settings_.np);
+    return;
+  }
+  const double D = settings_.parcel_diameter;
+  if (std::fabs(diameter - D) > kDiameterTolerance * D) {
+    char who[64];
+    if (atom->tag[i] > 0) std::snprintf(who, sizeof who, "atom %ld", static_cast<long>(atom->tag[i]));
+    else std::snprintf(who, sizeof who, "an inserted atom");
+    char msg[512];
+    std::snprintf(msg, sizeof msg,
+                  "fix %s parcel: %s has diameter %.9g but 'mode constant_diameter diameter' is %.9g; "
+                  "insert spheres of diameter D (radius %.9g) into group %s",
+                  id, who, diameter, D, 0.5 * D, group->names[igroup]);
+    error->one(FLERR, msg);
+  }
+  if (!needs_sequence_) {
+    d[DP] = settings_.classes.front().diameter;
+    d[NP] = particles_per_parcel(D, d[DP]);
+  } else {
+    d[DP] = -1.0;  // pending: the size class needs the atom ID, which fix insert assigns later
+    d[NP] = -1.0;
+  }
+}
+
+void FixParcel::resolve_pending()
+{
+  if (!needs_sequence_) return;
+  std::vector<int> local;
+  std::vector<tagint> tags;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (data_[i][DP] < 0.0) {
+      local.push_back(i);
+      tags.push_back(atom->tag[i]);
+    }
+  const int n = static_cast<int>(local.size());
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  long total = 0;
+  for (int p = 0; p < comm->nprocs; ++p) {
+    displs[p] = static_cast<int>(total);
+    total += counts[p];
+  }
+  if (total == 0) return;
+  std::vector<tagint> all(total);
+  MPI_Allgatherv(tags.data(), n, MPI_LMP_TAGINT, all.data(), counts.data(), displs.data(), MPI_LMP_TAGINT,
+                 world);
+  std::sort(all.begin(), all.end());
+  // parcels are numbered in the order of their IDs: the same numbering on every rank count
+  const double D = settings_.parcel_diameter;
+  for (int k = 0; k < n; ++k) {
+    if (tags[k] <= 0) error->one(FLERR, "fix parcel: a parcel has no atom ID; size classes need IDs");
+    const auto pos = std::lower_bound(all.begin(), all.end(), tags[k]) - all.begin();
+    const auto index = static_cast<std::uint64_t>(assigned_) + static_cast<std::uint64_t>(pos);
+    const SizeClass& c = settings_.classes[sequence_->class_of(index)];
+    data_[local[k]][DP] = c.diameter;
+    data_[local[k]][NP] = particles_per_parcel(D, c.diameter);
+  }
+  assigned_ += static_cast<double>(total);
+}
+
+void FixParcel::setup(int)
+{
+  resolve_pending();
+  if (!printed_) {
+    printed_ = true;
+    print_contact_values();
+  }
+}
+
+void FixParcel::pre_force(int) { resolve_pending(); }
+
+void FixParcel::grow_arrays(int nmax)
+{
+  memory->grow(data_, nmax, NCOLUMNS, "parcel:data");
+  array_atom = data_;
+}
+
+void FixParcel::copy_arrays(int i, int j, int)
+{
+  data_[j][DP] = data_[i][DP];
+  data_[j][NP] = data_[i][NP];
+}
+
+void FixParcel::set_arrays(int i) { assign(i); }
+
+int FixParcel::pack_exchange(int i, double* buf)
+{
+  buf[0] = data_[i][DP];
+  buf[1] = data_[i][NP];
+  return NCOLUMNS;
+}
+
+int FixParcel::unpack_exchange(int nlocal, double* buf)
+{
+  data_[nlocal][DP] = buf[0];
+  data_[nlocal][NP] = buf[1];
+  ++atoms_received_;
+  return NCOLUMNS;
+}
+
+int FixParcel::pack_restart(int i, double* buf)
+{
+  buf[0] = NCOLUMNS + 1;  // number of values including this one
+  buf[1] = data_[i][DP];
+  buf[2] = data_[i][NP];
+  return NCOLUMNS + 1;
+}
+
+void FixParcel::unpack_restart(int nlocal, int nth)
+{
+  double** extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; ++k) m += static_cast<int>(extra[nlocal][m]);
+  ++m;
+  data_[nlocal][DP] = extra[nlocal][m++];
+  data_[nlocal][NP] = extra[nlocal][m++];
+}
+
+int FixParcel::size_restart(int) { return NCOLUMNS + 1; }
+int FixParcel::maxsize_restart() { return NCOLUMNS + 1; }
+
+double FixParcel::memory_usage() { return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double); }
+
+// ------------------------------------------------------------------ global restart
+
+void FixParcel::write_restart(FILE* fp)
+{
+  std::vector<double> list = {double(kRestartVersion),
+                              double(static_cast<int>(settings_.mode)),
+                              settings_.np,
+                              settings_.parcel_diameter,
+                              double(settings_.seed),
+                              double(static_cast<int>(settings_.scaling)),
+                              double(settings_.classes.size())};
+  for (const SizeClass& c : settings_.classes) {
+    list.push_back(c.diameter);
+    list.push_back(c.mass_fraction);
+  }
+  list.push_back(assigned_);
+  if (comm->me == 0) {
+    const int size = static_cast<int>(list.size() * sizeof(double));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
+  }
+}
+
+void FixParcel::restart(char* buf)
+{
+  const double* list = reinterpret_cast<const double*>(buf);
+  if (static_cast<int>(list[0]) != kRestartVersion)
+    fail("fix parcel: the restart file holds an unknown version of this fix's state");
+  std::size_t n = 1;
+  const int mode = static_cast<int>(list[n++]);
+  const double np = list[n++], D = list[n++];
+  n += 2;  // seed, scaling
+  const std::size_t nclasses = static_cast<std::size_t>(list[n++]);
+  bool same = mode == static_cast<int>(settings_.mode) && np == settings_.np && D == settings_.parcel_diameter &&
+              nclasses == settings_.classes.size();
+  for (std::size_t k = 0; k < nclasses; ++k, n += 2)
+    if (same && (list[n] != settings_.classes[k].diameter || list[n + 1] != settings_.classes[k].mass_fraction))
+      same = false;
+  assigned_ = same ? list[n] : 0.0;
+  if (!same && comm->me == 0)
+    error->warning(FLERR, "fix parcel: settings differ from the restart file; dp and np of the restored "
+                          "parcels are kept, parcels inserted from now on follow the new settings");
+}
+
+// ------------------------------------------------------------------ collision scaling
+
+void FixParcel::post_create() { apply_scaling(); }
+
+void FixParcel::pre_delete(bool unfixflag)
+{
+  if (unfixflag) scaling_.undo(lmp);  // unfix, or the fix is redefined with the same ID
+}
+
+void FixParcel::apply_scaling()
+{
+  if (settings_.scaling != CollisionScaling::Linear || scaling_.applied()) return;
+  if (igroup != 0)
+    fail(std::string("fix parcel: scaling linear changes the contact coefficients of every type pair, so the "
+                     "fix group must be 'all' (got '") + group->names[igroup] + "')");
+  for (int k = 0; k < modify->nfix; ++k) {
+    auto* other = dynamic_cast<FixParcel*>(modify->fix[k]);
+    if (other && other != this && other->settings_.scaling == CollisionScaling::Linear)
+      fail(std::string("fix parcel: fix ") + other->id + " already scales the contact coefficients; only one "
+           "fix parcel may use scaling linear");
+  }
+  const std::string msg = scaling_.apply(lmp, settings_.uniform_scale_factor(), style);
+  if (!msg.empty()) fail(msg);
+}
+
+void FixParcel::init()
+{
+  if (settings_.scaling != CollisionScaling::Linear) return;
+  std::string msg = scaling_.check_intact(lmp, id);
+  if (msg.empty()) msg = ContactScaling::check_contact_models(lmp);
+  if (!msg.empty()) fail(msg);
+}
+
+void FixParcel::print_contact_values()
+{
+  if (comm->me != 0) return;
+  std::ostringstream out;
+  out.precision(6);
+  out << "fix " << id << " parcel: mode " << to_string(settings_.mode) << ", scaling "
+      << to_string(settings_.scaling);
+  if (settings_.scaling == CollisionScaling::Linear) {
+    out << ", l = D/dp = " << settings_.uniform_scale_factor() << "; contact coefficients in force:\n"
+        << scaling_.describe();
+  } else {
+    out << ": contact coefficients used as given\n";
+  }
+  if (screen) fputs(out.str().c_str(), screen);
+  if (logfile) fputs(out.str().c_str(), logfile);
+}
+
+}  // namespace parcelflow::plugins

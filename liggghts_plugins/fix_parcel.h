@@ -1,0 +1,77 @@
+// fix ID group parcel mode constant_np np N [scaling none|linear]
+// fix ID group parcel mode constant_diameter diameter D (dp d | distribution d1 f1 d2 f2 ...)
+//                     [seed S] [scaling none|linear]
+//
+// Makes the spheres of the group coarse-grained parcels: per-atom real particle diameter dp and real
+// particles per parcel np (columns 1 and 2 of the per-atom array: `dump custom ... f_ID[1] f_ID[2]`).
+// dp and np migrate with atoms, are written to restart files and are set for every atom created later
+// (fix insert/pack etc.). With `scaling linear` it scales the hooke/stiffness coefficients of
+// `fix property/global kn/kt/gamman/gammat(_abs)` in place, once. Full documentation: README.md.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact_scaling.h"
+#include "fix.h"
+#include "parcel_settings.h"
+#include "size_class_sequence.h"
+
+namespace parcelflow::plugins {
+
+class FixParcel : public LAMMPS_NS::Fix {
+ public:
+  enum Column { DP = 0, NP = 1, NCOLUMNS = 2 };
+
+  FixParcel(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
+  ~FixParcel() override;
+
+  int setmask() override;
+  void post_create() override;
+  void pre_delete(bool unfixflag) override;
+  void init() override;
+  void setup(int vflag) override;
+  void pre_force(int vflag) override;
+
+  void grow_arrays(int nmax) override;
+  void copy_arrays(int i, int j, int delflag) override;
+  void set_arrays(int i) override;
+  int pack_exchange(int i, double* buf) override;
+  int unpack_exchange(int nlocal, double* buf) override;
+  int pack_restart(int i, double* buf) override;
+  void unpack_restart(int nlocal, int nth) override;
+  int size_restart(int i) override;
+  int maxsize_restart() override;
+  void write_restart(FILE* fp) override;
+  void restart(char* buf) override;
+  double memory_usage() override;
+
+  // Coupling interface: local atoms 0..nlocal-1; re-fetch after every run (atoms move and reorder).
+  double dp(int i) const { return data_[i][DP]; }
+  double np(int i) const { return data_[i][NP]; }
+  double** peratom() { return data_; }
+  const ParcelSettings& settings() const { return settings_; }
+  // atoms received from other ranks by this rank since the fix was created (test of migration)
+  long atoms_received() const { return atoms_received_; }
+  // parcels that got a size class from the distribution so far (all ranks)
+  double parcels_assigned() const { return assigned_; }
+
+ private:
+  void assign(int i);
+  void resolve_pending();
+  void apply_scaling();
+  void print_contact_values();
+  [[noreturn]] void fail(const std::string& msg);
+
+  ParcelSettings settings_;
+  std::unique_ptr<SizeClassSequence> sequence_;
+  double** data_ = nullptr;
+  double assigned_ = 0.0;          // parcels numbered in the size-class sequence (global)
+  long atoms_received_ = 0;
+  bool needs_sequence_ = false;    // constant_diameter with more than one size class
+  ContactScaling scaling_;
+  bool printed_ = false;
+};
+
+}  // namespace parcelflow::plugins

@@ -1,0 +1,63 @@
+// Parcel arithmetic: diameters, particle counts, and the linear collision scaling of hooke/stiffness.
+//
+// A parcel holds np real particles of diameter dp and collides as one sphere of diameter
+// D = dp np^(1/3) (same solid volume), so its mass is np m_p when the sphere has the particle density.
+// l = D/dp is the coarse-graining ratio, np = l^3.
+#pragma once
+
+#include <cmath>
+
+namespace parcelflow::plugins {
+
+inline double particle_diameter(double parcel_diameter, double np) { return parcel_diameter / std::cbrt(np); }
+inline double particles_per_parcel(double parcel_diameter, double dp)
+{
+  const double l = parcel_diameter / dp;
+  return l * l * l;
+}
+
+// Coefficients of LIGGGHTS' `model hooke/stiffness` for one type pair. With absolute_damping off the
+// dampings are mass-specific (force = gamma * m_eff * v_n, [1/s]); with absolute_damping on they are
+// absolute (force = gamma_abs * v_n, [kg/s]).
+struct HookeCoefficients {
+  double kn = 0, kt = 0, gamman = 0, gammat = 0;
+  bool absolute_damping = false;
+};
+
+// Linear scaling (Radl et al. 2011, Bierwisch et al. 2009) from the particle to a parcel of l = D/dp.
+// Normal relative motion of a contact: m_eff x'' + g_abs x' + k x = 0 with
+//   omega0^2 = k/m_eff,  zeta = g_abs / (2 sqrt(k m_eff)),  e = exp(-pi zeta / sqrt(1 - zeta^2)),
+//   t_c = pi / (omega0 sqrt(1 - zeta^2)).
+// Parcels: m_eff -> l^3 m_eff. With k -> l k, sqrt(k m_eff) -> l^2 sqrt(k m_eff), so e (and the
+// friction coefficient, which is not touched) stays the same when g_abs -> l^2 g_abs, i.e. the
+// mass-specific g = g_abs/m_eff -> g/l. The contact duration grows as sqrt(m_eff/k) -> l t_c and the
+// overlap relative to the diameter is kept: delta_max ~ v sqrt(m_eff/k) -> l delta_max.
+// The tangential spring and damping are scaled the same way (kt with kn, gammat with gamman).
+inline HookeCoefficients scale_linear(const HookeCoefficients& c, double l)
+{
+  HookeCoefficients s = c;
+  s.kn = c.kn * l;
+  s.kt = c.kt * l;
+  const double damping_factor = c.absolute_damping ? l * l : 1.0 / l;
+  s.gamman = c.gamman * damping_factor;
+  s.gammat = c.gammat * damping_factor;
+  return s;
+}
+
+// Damped linear oscillator of one normal contact (absolute damping g_abs [kg/s]).
+inline double damping_ratio(double kn, double gamma_abs, double m_eff)
+{
+  return gamma_abs / (2.0 * std::sqrt(kn * m_eff));
+}
+inline double restitution_coefficient(double kn, double gamma_abs, double m_eff)
+{
+  const double z = damping_ratio(kn, gamma_abs, m_eff);
+  return std::exp(-M_PI * z / std::sqrt(1.0 - z * z));
+}
+inline double contact_duration(double kn, double gamma_abs, double m_eff)
+{
+  const double z = damping_ratio(kn, gamma_abs, m_eff);
+  return M_PI / (std::sqrt(kn / m_eff) * std::sqrt(1.0 - z * z));
+}
+
+}  // namespace parcelflow::plugins

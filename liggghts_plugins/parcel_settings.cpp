@@ -1,0 +1,180 @@
+#include "parcel_settings.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+#include "parcel_math.h"
+
+namespace parcelflow::plugins {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw ArgumentError("fix parcel: " + what); }
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+bool is_number(const std::string& token)
+{
+  if (token.empty()) return false;
+  const char* begin = token.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(begin, &end);
+  return end != begin && *end == '\0' && errno == 0 && std::isfinite(v);
+}
+
+const std::string kKeywords = "mode, np, diameter, dp, distribution, seed, scaling";
+
+}  // namespace
+
+double parse_number(const std::string& keyword, const std::string& token)
+{
+  if (!is_number(token))
+    fail("keyword '" + keyword + "' needs a number, got " + quoted(token));
+  return std::strtod(token.c_str(), nullptr);
+}
+
+double ParcelSettings::uniform_scale_factor() const
+{
+  if (mode == ParcelMode::ConstantNp) return std::cbrt(np);
+  if (classes.size() == 1) return parcel_diameter / classes.front().diameter;
+  return 0.0;
+}
+
+const char* to_string(ParcelMode mode)
+{
+  return mode == ParcelMode::ConstantNp ? "constant_np" : "constant_diameter";
+}
+
+const char* to_string(CollisionScaling scaling)
+{
+  return scaling == CollisionScaling::None ? "none" : "linear";
+}
+
+ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
+{
+  ParcelSettings s;
+  std::set<std::string> seen;
+  bool have_mode = false, have_np = false, have_diameter = false, have_dp = false, have_dist = false;
+  std::size_t i = 0;
+  auto value_of = [&](const std::string& key, const char* allowed) -> const std::string& {
+    if (i + 1 >= args.size()) fail("keyword '" + key + "' needs a value (" + allowed + ")");
+    return args[i + 1];
+  };
+  while (i < args.size()) {
+    const std::string& key = args[i];
+    if (seen.count(key) && key != "") fail("keyword '" + key + "' given twice");
+    seen.insert(key);
+    if (key == "mode") {
+      const std::string& v = value_of(key, "constant_np or constant_diameter");
+      if (v == "constant_np") s.mode = ParcelMode::ConstantNp;
+      else if (v == "constant_diameter") s.mode = ParcelMode::ConstantDiameter;
+      else fail("keyword 'mode' got " + quoted(v) + "; allowed: constant_np, constant_diameter");
+      have_mode = true;
+      i += 2;
+    } else if (key == "np") {
+      const double v = parse_number(key, value_of(key, "a number >= 1"));
+      if (!(v >= 1.0)) fail("keyword 'np' got " + quoted(args[i + 1]) + "; allowed: a number >= 1");
+      s.np = v;
+      have_np = true;
+      i += 2;
+    } else if (key == "diameter") {
+      const double v = parse_number(key, value_of(key, "a parcel diameter > 0"));
+      if (!(v > 0.0)) fail("keyword 'diameter' got " + quoted(args[i + 1]) + "; allowed: a parcel diameter > 0");
+      s.parcel_diameter = v;
+      have_diameter = true;
+      i += 2;
+    } else if (key == "dp") {
+      const double v = parse_number(key, value_of(key, "a particle diameter > 0"));
+      if (!(v > 0.0)) fail("keyword 'dp' got " + quoted(args[i + 1]) + "; allowed: a particle diameter > 0");
+      s.classes = {SizeClass{v, 1.0}};
+      have_dp = true;
+      i += 2;
+    } else if (key == "distribution") {
+      std::size_t j = i + 1;
+      std::vector<SizeClass> classes;
+      while (j + 1 < args.size() && is_number(args[j]) && is_number(args[j + 1])) {
+        classes.push_back({std::strtod(args[j].c_str(), nullptr), std::strtod(args[j + 1].c_str(), nullptr)});
+        j += 2;
+      }
+      if (j < args.size() && is_number(args[j]))
+        fail("keyword 'distribution' needs pairs 'diameter mass_fraction'; the diameter " + quoted(args[j]) +
+             " has no mass fraction");
+      if (classes.empty())
+        fail("keyword 'distribution' needs at least one pair 'diameter mass_fraction'" +
+             std::string(j < args.size() ? ", got " + quoted(args[j]) : ""));
+      double sum = 0.0;
+      std::set<double> diameters;
+      for (const SizeClass& c : classes) {
+        std::ostringstream v;
+        v << c.diameter << " " << c.mass_fraction;
+        if (!(c.diameter > 0.0))
+          fail("keyword 'distribution' got diameter " + quoted(v.str().substr(0, v.str().find(' '))) +
+               "; allowed: diameters > 0");
+        if (!(c.mass_fraction > 0.0))
+          fail("keyword 'distribution' got the pair " + quoted(v.str()) + "; allowed: mass fractions > 0");
+        if (!diameters.insert(c.diameter).second)
+          fail("keyword 'distribution' lists the diameter " + quoted(v.str().substr(0, v.str().find(' '))) +
+               " twice; allowed: distinct diameters");
+        sum += c.mass_fraction;
+      }
+      if (std::fabs(sum - 1.0) > 1e-6) {
+        std::ostringstream msg;
+        msg.precision(12);
+        msg << "keyword 'distribution': the mass fractions sum to " << sum
+            << "; allowed: a sum of 1 within 1e-6";
+        fail(msg.str());
+      }
+      if (classes.size() > 65535) fail("keyword 'distribution': at most 65535 size classes are allowed");
+      s.classes = classes;
+      have_dist = true;
+      i = j;
+    } else if (key == "seed") {
+      const double v = parse_number(key, value_of(key, "a positive integer"));
+      if (!(v >= 1.0 && v <= 4294967295.0 && v == std::floor(v)))
+        fail("keyword 'seed' got " + quoted(args[i + 1]) + "; allowed: an integer from 1 to 4294967295");
+      s.seed = static_cast<std::uint32_t>(v);
+      i += 2;
+    } else if (key == "scaling") {
+      const std::string& v = value_of(key, "none or linear");
+      if (v == "none") s.scaling = CollisionScaling::None;
+      else if (v == "linear") s.scaling = CollisionScaling::Linear;
+      else fail("keyword 'scaling' got " + quoted(v) + "; allowed: none, linear");
+      i += 2;
+    } else {
+      fail("unknown keyword " + quoted(key) + "; allowed keywords: " + kKeywords);
+    }
+  }
+
+  if (!have_mode) fail("keyword 'mode' is missing; allowed: mode constant_np | mode constant_diameter");
+  if (s.mode == ParcelMode::ConstantNp) {
+    if (!have_np) fail("mode constant_np needs keyword 'np' (real particles per parcel, >= 1)");
+    if (have_diameter || have_dp || have_dist)
+      fail(std::string("keyword '") + (have_diameter ? "diameter" : have_dp ? "dp" : "distribution") +
+           "' is not allowed with mode constant_np (dp follows from the inserted diameter and np); "
+           "use mode constant_diameter");
+  } else {
+    if (have_np)
+      fail("keyword 'np' is not allowed with mode constant_diameter (np = (D/dp)^3 per parcel)");
+    if (!have_diameter) fail("mode constant_diameter needs keyword 'diameter' (the parcel diameter D)");
+    if (have_dp && have_dist) fail("keywords 'dp' and 'distribution' exclude each other; give one");
+    if (!have_dp && !have_dist)
+      fail("mode constant_diameter needs keyword 'dp' or 'distribution' (real particle diameters)");
+    for (const SizeClass& c : s.classes)
+      if (c.diameter > s.parcel_diameter * (1.0 + 1e-12)) {
+        std::ostringstream msg;
+        msg << "particle diameter " << c.diameter << " is larger than the parcel diameter " << s.parcel_diameter
+            << " (keyword '" << (have_dp ? "dp" : "distribution") << "'); allowed: dp <= diameter (np >= 1)";
+        fail(msg.str());
+      }
+    if (s.scaling == CollisionScaling::Linear && s.classes.size() > 1)
+      fail("keyword 'scaling' linear needs one l = D/dp per type pair, but the distribution has " +
+           std::to_string(s.classes.size()) +
+           " particle diameters; allowed: scaling none, or a single size (dp), or mode constant_np");
+  }
+  return s;
+}
+
+}  // namespace parcelflow::plugins

@@ -1,0 +1,125 @@
+// Two parcels colliding head-on (no gravity) with `scaling linear`, l = 1, 2, 4 (np = 1, 8, 64):
+// the measured restitution coefficient equals the particle-level one and the contact duration grows
+// in proportion to l. Both damping conventions of hooke/stiffness (mass-specific gamman and
+// absolute_damping on with gamman_abs) are checked.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fix_parcel.h"
+#include "liggghts_session.h"
+#include "parcel_math.h"
+#include "update.h"
+
+using namespace parcelflow::plugins;
+using namespace parcelflow::plugins::testing;
+
+namespace {
+
+const std::string kDir = PARCEL_TEST_DIR;
+constexpr double kDp = 0.002, kRho = 2500.0, kKn = 1000.0, kTargetE = 0.7;
+
+struct Collision {
+  double e;         // measured restitution coefficient
+  long steps;       // steps with overlap > 0
+  double duration;  // steps * dt
+};
+
+// particle-level coefficients: m_eff of two particles, absolute damping giving e = kTargetE
+double particle_m_eff() { return 0.5 * kRho * M_PI / 6.0 * kDp * kDp * kDp; }
+double particle_gamma_abs()
+{
+  const double ln = std::log(kTargetE), zeta = -ln / std::sqrt(M_PI * M_PI + ln * ln);
+  return 2.0 * zeta * std::sqrt(kKn * particle_m_eff());
+}
+
+Collision collide(double l, bool absolute, double dt, const char* scaling = "linear")
+{
+  const double D = kDp * l, np = l * l * l;
+  const double g_abs = particle_gamma_abs(), m_eff = particle_m_eff();
+  Session s("none");
+  auto var = [&](const std::string& name, double value) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", value);
+    s.cmd("variable " + name + " equal " + buf);
+  };
+  var("D", D);
+  var("x0", 0.5 * D * 1.05);
+  var("skin", 0.2 * D);
+  var("kn", kKn);
+  var("kt", 2.0 / 7.0 * kKn);
+  var("gn", absolute ? g_abs : g_abs / m_eff);
+  var("gt", absolute ? 0.5 * g_abs : 0.5 * g_abs / m_eff);
+  var("dt", dt);
+  s.cmd(std::string("variable gname string ") + (absolute ? "gamman_abs" : "gamman"));
+  s.cmd(std::string("variable gtname string ") + (absolute ? "gammat_abs" : "gammat"));
+  s.cmd(std::string("variable absolute string ") + (absolute ? "on" : "off"));
+  s.file(kDir + "/collision.in");
+  char fix[128];
+  std::snprintf(fix, sizeof fix, "fix p all parcel mode constant_np np %.17g scaling %s", np, scaling);
+  s.cmd(fix);
+  s.cmd("run 0");
+
+  auto state = [&]() {
+    // x position and x velocity of atoms 1 and 2 (on any rank)
+    const auto v = gather_by_tag<2>(s.lmp(), [&](int i) {
+      return std::array<double, 2>{s.lmp()->atom->x[i][0], s.lmp()->atom->v[i][0]};
+    });
+    return v;
+  };
+  const double v_before = -1.0;  // v2 - v1
+  long steps = 0;
+  bool touched = false;
+  for (int n = 0; n < 200000; ++n) {
+    s.cmd("run 1 pre no post no");
+    const auto st = state();
+    const double gap = st.at(2)[0] - st.at(1)[0] - D;
+    if (gap < 0) {
+      ++steps;
+      touched = true;
+    } else if (touched) {
+      const double v_after = st.at(2)[1] - st.at(1)[1];
+      return {-v_after / v_before, steps, steps * dt};
+    }
+  }
+  ADD_FAILURE() << "the parcels did not separate";
+  return {0, 0, 0};
+}
+
+}  // namespace
+
+TEST(ParcelCollision, LinearScalingKeepsRestitutionAndScalesDuration)
+{
+  const double m_eff = particle_m_eff(), g_abs = particle_gamma_abs();
+  const double e_particle = restitution_coefficient(kKn, g_abs, m_eff);
+  const double tc1 = contact_duration(kKn, g_abs, m_eff);
+  const double dt = tc1 / 100.0;
+  PF_PRINT("[ collision ] particle: dp %.3g m, kn %.4g N/m, gamman_abs %.5g kg/s (gamman %.5g 1/s): analytic "
+           "e = %.6f, t_c = %.5g s; dt = t_c/100\n", kDp, kKn, g_abs, g_abs / m_eff, e_particle, tc1);
+  for (bool absolute : {false, true}) {
+    Collision ref{};
+    for (double l : {1.0, 2.0, 4.0}) {
+      const Collision c = collide(l, absolute, dt);
+      if (l == 1.0) ref = c;
+      const double e_err = c.e / e_particle - 1.0;
+      const double duration_ratio = static_cast<double>(c.steps) / ref.steps;
+      const double t_err = c.duration / (l * tc1) - 1.0;
+      PF_PRINT("[ collision ] absolute_damping %-3s l = %.0f (np %3.0f): e = %.6f (error vs particle %+.3f %%), "
+               "contact %ld steps = %.5g s, duration ratio to l=1: %.4f (l = %.0f, error %+.2f %%), vs l t_c: %+.2f %%\n",
+               absolute ? "on" : "off", l, l * l * l, c.e, 100 * e_err, c.steps, c.duration, duration_ratio, l,
+               100 * (duration_ratio / l - 1), 100 * t_err);
+      EXPECT_LT(std::fabs(e_err), 0.01);
+      EXPECT_LT(std::fabs(duration_ratio / l - 1.0), 0.02);  // +-1 step of 100 at l = 1
+    }
+  }
+  // control: without scaling (absolute damping) the parcel contact is softer relative to its mass: t_c grows
+  // about as l^(3/2) and the restitution changes, so the test above does see the scaling
+  const Collision ref = collide(1.0, true, dt, "none"), c = collide(4.0, true, dt, "none");
+  const double z1 = damping_ratio(kKn, g_abs, m_eff), z4 = damping_ratio(kKn, g_abs, 64 * m_eff);
+  const double expected_ratio = 8.0 * std::sqrt(1 - z1 * z1) / std::sqrt(1 - z4 * z4);
+  PF_PRINT("[ collision ] control, scaling none, absolute damping, l = 4: e = %.6f (analytic %.6f, particle %.6f), "
+           "duration ratio to l=1: %.3f (analytic %.3f)\n", c.e, restitution_coefficient(kKn, g_abs, 64 * m_eff),
+           e_particle, static_cast<double>(c.steps) / ref.steps, expected_ratio);
+  EXPECT_NEAR(static_cast<double>(c.steps) / ref.steps, expected_ratio, 0.05);
+  EXPECT_GT(c.e, e_particle + 0.1);
+}

@@ -1,0 +1,55 @@
+// dp <-> np <-> D and the linear collision scaling of hooke/stiffness.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "parcel_math.h"
+
+using namespace parcelflow::plugins;
+
+TEST(ParcelMath, DiametersAndCounts)
+{
+  EXPECT_NEAR(particle_diameter(0.015, 27.0), 0.005, 1e-15);
+  EXPECT_NEAR(particle_diameter(0.002, 8.0), 0.001, 1e-16);
+  EXPECT_NEAR(particles_per_parcel(0.015, 0.005), 27.0, 1e-12);
+  EXPECT_NEAR(particles_per_parcel(0.015, 150e-6), 1e6, 1e-6);
+  for (double np : {1.0, 2.5, 8.0, 1000.0, 123456.0}) {
+    const double D = 0.01;
+    EXPECT_NEAR(particles_per_parcel(D, particle_diameter(D, np)) / np, 1.0, 1e-13);
+    // equal solid volume: np dp^3 = D^3, so the parcel mass is np times the particle mass
+    EXPECT_NEAR(np * std::pow(particle_diameter(D, np), 3) / (D * D * D), 1.0, 1e-13);
+  }
+}
+
+TEST(ParcelMath, LinearScalingKeepsRestitutionAndScalesContactTime)
+{
+  const double m_p = 1e-3, kn = 1e4;  // particle mass, stiffness
+  for (bool absolute : {false, true}) {
+    HookeCoefficients c;
+    c.kn = kn;
+    c.kt = 2.0 / 7.0 * kn;
+    c.absolute_damping = absolute;
+    const double m_eff = 0.5 * m_p;
+    const double gamma_abs = 0.3 * 2.0 * std::sqrt(kn * m_eff);  // damping ratio 0.3
+    c.gamman = absolute ? gamma_abs : gamma_abs / m_eff;
+    c.gammat = 0.5 * c.gamman;
+    const double e1 = restitution_coefficient(kn, gamma_abs, m_eff);
+    const double t1 = contact_duration(kn, gamma_abs, m_eff);
+    for (double l : {1.0, 2.0, 3.0, 4.0, 10.0}) {
+      const HookeCoefficients s = scale_linear(c, l);
+      const double M_eff = l * l * l * m_eff;
+      const double g_abs = absolute ? s.gamman : s.gamman * M_eff;
+      const double e = restitution_coefficient(s.kn, g_abs, M_eff);
+      const double t = contact_duration(s.kn, g_abs, M_eff);
+      std::printf("[ scaling ] absolute_damping=%d l=%4.1f kn=%.4g kt=%.4g gamman=%.4g gammat=%.4g  e=%.12f (particle %.12f) "
+                  "t_c/(l t_c1)=%.12f\n", absolute, l, s.kn, s.kt, s.gamman, s.gammat, e, e1, t / (l * t1));
+      EXPECT_NEAR(e, e1, 1e-12);
+      EXPECT_NEAR(t / (l * t1), 1.0, 1e-12);
+      EXPECT_NEAR(s.kn, l * kn, 1e-9);
+      EXPECT_NEAR(s.kt, l * c.kt, 1e-9);
+      EXPECT_NEAR(s.gamman / c.gamman, absolute ? l * l : 1.0 / l, 1e-12);
+      EXPECT_NEAR(s.gammat / c.gammat, absolute ? l * l : 1.0 / l, 1e-12);
+    }
+  }
+}

@@ -1,0 +1,102 @@
+// Argument parsing of `fix ID group parcel ...`: accepted forms and the error messages.
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "parcel_settings.h"
+
+using namespace parcelflow::plugins;
+
+namespace {
+
+std::vector<std::string> split(const std::string& s)
+{
+  std::istringstream in(s);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+ParcelSettings parse(const std::string& s) { return parse_parcel_settings(split(s)); }
+
+// Expects an ArgumentError whose message contains every fragment.
+void expect_error(const std::string& args, const std::vector<std::string>& fragments)
+{
+  try {
+    parse(args);
+    ADD_FAILURE() << "no error for: " << args;
+  } catch (const ArgumentError& e) {
+    const std::string msg = e.what();
+    std::cout << "[ message ] " << args << "\n            -> " << msg << "\n";
+    for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
+  }
+}
+
+}  // namespace
+
+TEST(ParcelSettings, ConstantNp)
+{
+  const ParcelSettings s = parse("mode constant_np np 8");
+  EXPECT_EQ(s.mode, ParcelMode::ConstantNp);
+  EXPECT_DOUBLE_EQ(s.np, 8.0);
+  EXPECT_EQ(s.scaling, CollisionScaling::None);
+  EXPECT_EQ(s.seed, 12345679u);
+  EXPECT_NEAR(s.uniform_scale_factor(), 2.0, 1e-14);
+  EXPECT_EQ(parse("np 27 scaling linear mode constant_np").scaling, CollisionScaling::Linear);
+}
+
+TEST(ParcelSettings, ConstantDiameter)
+{
+  const ParcelSettings s = parse("mode constant_diameter diameter 0.015 distribution 1e-4 0.25 2e-4 0.75 seed 1234567");
+  EXPECT_EQ(s.mode, ParcelMode::ConstantDiameter);
+  EXPECT_DOUBLE_EQ(s.parcel_diameter, 0.015);
+  ASSERT_EQ(s.classes.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.classes[1].diameter, 2e-4);
+  EXPECT_DOUBLE_EQ(s.classes[1].mass_fraction, 0.75);
+  EXPECT_EQ(s.seed, 1234567u);
+  EXPECT_EQ(s.uniform_scale_factor(), 0.0);
+  const ParcelSettings one = parse("mode constant_diameter diameter 0.004 dp 0.001 scaling linear");
+  EXPECT_NEAR(one.uniform_scale_factor(), 4.0, 1e-14);
+}
+
+TEST(ParcelSettings, Errors)
+{
+  expect_error("", {"'mode' is missing"});
+  expect_error("mode", {"'mode' needs a value"});
+  expect_error("mode fancy np 2", {"'mode'", "'fancy'", "constant_np, constant_diameter"});
+  expect_error("mode constant_np", {"needs keyword 'np'"});
+  expect_error("mode constant_np np", {"'np' needs a value"});
+  expect_error("mode constant_np np abc", {"'np'", "'abc'", "number"});
+  expect_error("mode constant_np np 0.5", {"'np'", "'0.5'", ">= 1"});
+  expect_error("mode constant_np np -8", {"'np'", "'-8'", ">= 1"});
+  expect_error("mode constant_np np 8 colour red", {"unknown keyword 'colour'", "allowed keywords"});
+  expect_error("mode constant_np np 8 np 4", {"'np' given twice"});
+  expect_error("mode constant_np np 8 diameter 0.01", {"'diameter'", "not allowed with mode constant_np"});
+  expect_error("mode constant_np np 8 scaling cubic", {"'scaling'", "'cubic'", "none, linear"});
+  expect_error("mode constant_np np 8 seed 0", {"'seed'", "'0'", "integer"});
+  expect_error("mode constant_np np 8 seed 1.5", {"'seed'", "'1.5'"});
+  expect_error("mode constant_diameter dp 0.001", {"needs keyword 'diameter'"});
+  expect_error("mode constant_diameter diameter 0 dp 0.001", {"'diameter'", "'0'", "> 0"});
+  expect_error("mode constant_diameter diameter -0.01 dp 0.001", {"'diameter'", "'-0.01'", "> 0"});
+  expect_error("mode constant_diameter diameter 0.01", {"'dp' or 'distribution'"});
+  expect_error("mode constant_diameter diameter 0.01 dp 0", {"'dp'", "'0'", "> 0"});
+  expect_error("mode constant_diameter diameter 0.01 dp 0.02", {"0.02", "larger than the parcel diameter", "dp <= diameter"});
+  expect_error("mode constant_diameter diameter 0.01 np 8 dp 0.001", {"'np' is not allowed"});
+  expect_error("mode constant_diameter diameter 0.01 distribution", {"'distribution' needs at least one pair"});
+  expect_error("mode constant_diameter diameter 0.01 distribution 0.001", {"'distribution'", "'0.001'", "no mass fraction"});
+  expect_error("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.4",
+               {"'distribution'", "sum to 0.9", "1 within 1e-6"});
+  expect_error("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5000011",
+               {"'distribution'", "sum to 1.0000011"});
+  expect_error("mode constant_diameter diameter 0.01 distribution 0.001 1.2 0.002 -0.2",
+               {"'distribution'", "-0.2", "mass fractions > 0"});
+  expect_error("mode constant_diameter diameter 0.01 distribution -0.001 1", {"'distribution'", "-0.001", "diameters > 0"});
+  expect_error("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.001 0.5", {"twice", "distinct"});
+  expect_error("mode constant_diameter diameter 0.01 dp 0.001 distribution 0.001 1", {"exclude each other"});
+  expect_error("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5 scaling linear",
+               {"'scaling' linear", "2 particle diameters", "scaling none"});
+  // within 1e-6 is accepted
+  EXPECT_NO_THROW(parse("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5000009"));
+}
