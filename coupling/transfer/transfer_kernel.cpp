@@ -1,0 +1,21 @@
+#include "transfer_kernel.hpp"
+
+#include <stdexcept>
+
+namespace parcelflow::coupling {
+
+std::vector<std::string> transferKernelNames() { return {GaussianKernel::typeName, CentroidKernel::typeName}; }
+
+TransferKernel makeTransferKernel(const std::string& name, const TransferKernelOptions& options) {
+  if (name == GaussianKernel::typeName) return GaussianKernel(options.gaussianSharpness, options.gaussianRadius);
+  if (name == CentroidKernel::typeName) return CentroidKernel(options.centroidSearchRadius);
+  std::string valid;
+  for (const std::string& n : transferKernelNames()) valid += (valid.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown transfer kernel '" + name + "'; valid names are: " + valid);
+}
+
+std::string transferKernelName(const TransferKernel& kernel) {
+  return std::visit([](const auto& k) { return std::string(k.typeName); }, kernel);
+}
+
+}  // namespace parcelflow::coupling

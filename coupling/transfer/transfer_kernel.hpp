@@ -1,0 +1,27 @@
+#pragma once
+// Run-time selection of the particle <-> mesh kernel by name ("gaussian", "centroid"). A
+// TransferKernel holds one concrete kernel; the transfer routines visit it once per batch and run a
+// loop templated on the concrete kernel (no virtual call per parcel). Unknown names throw
+// std::invalid_argument listing the valid ones.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "centroid_kernel.hpp"
+#include "gaussian_kernel.hpp"
+
+namespace parcelflow::coupling {
+
+using TransferKernel = std::variant<GaussianKernel, CentroidKernel>;
+
+struct TransferKernelOptions {
+  double gaussianSharpness = 1.0;  // a in exp(-a |dx|^2 / h^2)
+  int gaussianRadius = 2;          // stencil +-R cells per axis
+  int centroidSearchRadius = 1;    // fallback search for the centroid kernel
+};
+
+std::vector<std::string> transferKernelNames();
+TransferKernel makeTransferKernel(const std::string& name, const TransferKernelOptions& options = {});
+std::string transferKernelName(const TransferKernel& kernel);
+
+}  // namespace parcelflow::coupling

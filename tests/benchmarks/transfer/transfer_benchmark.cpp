@@ -1,0 +1,84 @@
+// Particle <-> mesh transfer throughput: 100k parcels in a 40 x 40 x 80 all-fluid box (a lookup
+// through a dense index array, as the gas mesh's localCellOfBackground would do), Gaussian (a = 1,
+// R = 2 and R = 1) vs cell-centroid. Reports parcels per second for
+//   build  : computing the stencils (kernel weights + lookups) into a StencilSet,
+//   deposit: depositCouplingSources (volume, kappa, kappa v) from the StencilSet,
+//   gather : 3-component gather (gas velocity) from the StencilSet,
+//   fly    : depositParcels + gatherToParcels recomputing the weights each time (no cache).
+// Not a test: prints numbers; label benchmark (excluded from the default ctest run).
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "stencil_set.hpp"
+
+using namespace parcelflow::coupling;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+template <class F>
+double best(int reps, F&& f) {
+  double t = 1e300;
+  for (int r = 0; r < reps; ++r) {
+    const auto a = Clock::now();
+    f();
+    t = std::min(t, seconds(a, Clock::now()));
+  }
+  return t;
+}
+
+}  // namespace
+
+int main() {
+  BackgroundGrid g;
+  g.cells = {40, 40, 80};
+  g.spacing = {0.01, 0.01, 0.01};
+  const int nCells = g.cells[0] * g.cells[1] * g.cells[2];
+  std::vector<int> index(nCells);
+  for (int c = 0; c < nCells; ++c) index[c] = c;
+  const auto lookup = [&](int i, int j, int k) { return index[(k * g.cells[1] + j) * g.cells[0] + i]; };
+
+  const std::size_t n = 100000;
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> pos(3 * n), v(3 * n), vol(n), kappa(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    for (int d = 0; d < 3; ++d) {
+      pos[3 * p + d] = u(rng) * g.cells[d] * g.spacing[d];
+      v[3 * p + d] = u(rng) - 0.5;
+    }
+    vol[p] = 1e-9 * (1 + u(rng));
+    kappa[p] = 1e-6 * (1 + u(rng));
+  }
+  std::vector<double> cVol(nCells), cKappa(nCells), cKv(3 * nCells), uCell(3 * nCells, 0.3), uP(3 * n),
+      q(5 * n), cQ(5 * nCells);
+  for (std::size_t p = 0; p < n; ++p) {
+    q[5 * p] = vol[p];
+    q[5 * p + 1] = kappa[p];
+    for (int d = 0; d < 3; ++d) q[5 * p + 2 + d] = kappa[p] * v[3 * p + d];
+  }
+
+  std::printf("transfer benchmark: %zu parcels, %d cells, best of 5 (parcels per second, millions)\n", n, nCells);
+  std::printf("%-20s %10s %10s %10s %12s %10s\n", "kernel", "build", "deposit", "gather", "fly dep+gat", "entries");
+  const TransferKernel kernels[] = {GaussianKernel(1.0, 2), GaussianKernel(1.0, 1), CentroidKernel(1)};
+  const char* names[] = {"gaussian a=1 R=2", "gaussian a=1 R=1", "centroid"};
+  for (int k = 0; k < 3; ++k) {
+    StencilSet set;
+    const double tBuild = best(5, [&] { buildStencils(kernels[k], g, lookup, n, pos.data(), set); });
+    const double tDep = best(5, [&] {
+      depositCouplingSources(set, vol.data(), kappa.data(), v.data(), cVol.data(), cKappa.data(), cKv.data());
+    });
+    const double tGat = best(5, [&] { gather(set, 3, uCell.data(), uP.data()); });
+    const double tFly = best(5, [&] {
+      depositParcels(kernels[k], g, lookup, n, pos.data(), 5, q.data(), cQ.data());
+      gatherToParcels(kernels[k], g, lookup, n, pos.data(), 3, uCell.data(), uP.data());
+    });
+    std::printf("%-20s %10.2f %10.2f %10.2f %12.2f %10.1f\n", names[k], n / tBuild * 1e-6, n / tDep * 1e-6,
+                n / tGat * 1e-6, n / tFly * 1e-6, double(set.cell.size()) / n);
+  }
+  return 0;
+}
