@@ -1,0 +1,125 @@
+#include "case_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+#include "cfd/config_error.hpp"
+#include "drag_law.hpp"
+#include "cfd/yaml_section.hpp"
+
+namespace parcelflow::coupling {
+
+using cfd::ConfigError;
+using cfd::Range;
+using cfd::YamlSection;
+
+namespace {
+
+const std::vector<std::string> kCouplingTopLevelKeys = {"liggghts", "time", "coupling", "output", "monitors"};
+
+LiggghtsSettings readLiggghts(const YamlSection& s) {
+  s.allowOnly({"script", "variables"});
+  LiggghtsSettings l;
+  l.script = s.text("script", std::nullopt);
+  if (s.has("variables")) {
+    const YamlSection vars = s.map("variables");
+    for (const auto& name : vars.keys()) l.variables.emplace_back(name, vars.text(name, std::nullopt));
+  }
+  return l;
+}
+
+TimeSettings readTime(const YamlSection& s) {
+  s.allowOnly({"end", "gas_step", "dem_step"});
+  TimeSettings t;
+  t.end = s.number("end", std::nullopt, Range::positive());
+  t.gas_step = s.number("gas_step", std::nullopt, Range::positive());
+  t.dem_step = s.number("dem_step", std::nullopt, Range::positive());
+  const double ratio = t.gas_step / t.dem_step;
+  if (ratio < 0.5 || std::abs(ratio - std::round(ratio)) > 1e-6 * ratio)
+    s.fail("gas_step", "is " + std::to_string(ratio) + " DEM steps (time.dem_step = " + std::to_string(t.dem_step) +
+                           "); it must be a whole number of DEM steps, at least 1");
+  return t;
+}
+
+CouplingSettings readCoupling(const YamlSection& s) {
+  s.allowOnly({"drag", "kernel", "gas_fraction_floor"});
+  CouplingSettings c;
+  c.drag = s.word("drag", c.drag, dragLawNames());
+  c.gas_fraction_floor = s.number("gas_fraction_floor", c.gas_fraction_floor, Range{0.0, 1.0, true, true});
+  if (s.has("kernel")) {
+    const YamlSection k = s.map("kernel");
+    k.allowOnly({"type", "width", "radius"});
+    c.kernel.type = k.word("type", c.kernel.type, {"gaussian", "centroid"});
+    c.kernel.width = k.number("width", c.kernel.width, Range::positive());
+    c.kernel.radius = k.integer("radius", c.kernel.radius, 1, 4);
+  }
+  return c;
+}
+
+OutputSettings readOutput(const YamlSection& s) {
+  s.allowOnly({"folder", "fields_interval", "monitor_interval", "progress_interval"});
+  OutputSettings o;
+  o.folder = s.text("folder", o.folder);
+  o.fields_interval = s.number("fields_interval", o.fields_interval, Range::nonNegative());
+  o.monitor_interval = s.number("monitor_interval", o.monitor_interval, Range::positive());
+  o.progress_interval = s.number("progress_interval", o.progress_interval, Range::positive());
+  return o;
+}
+
+MonitorSettings readMonitors(const YamlSection& s, const YAML::Node& node) {
+  s.allowOnly({"pressure_planes", "bed_pressure_drop"});
+  MonitorSettings m;
+  if (s.has("pressure_planes")) {
+    const YAML::Node planes = node["pressure_planes"];
+    if (!planes.IsSequence() || planes.size() == 0)
+      s.fail("pressure_planes", "must be a non-empty list of heights z [m]");
+    m.pressure_planes = s.numbers("pressure_planes", planes.size(), Range::any());
+  }
+  if (s.has("bed_pressure_drop")) {
+    const auto z = s.numbers("bed_pressure_drop", 2, Range::any());
+    if (!(z[0] < z[1])) s.fail("bed_pressure_drop", "must be two heights [z_low, z_high] with z_low < z_high");
+    m.bed_pressure_drop = {z[0], z[1]};
+    m.has_bed_pressure_drop = true;
+  }
+  return m;
+}
+
+}  // namespace
+
+CaseSettings readCouplingSettings(const YAML::Node& root) {
+  const YamlSection top(root, "");
+  std::vector<std::string> allowed = kCouplingTopLevelKeys;
+  for (const auto& key : cfd::GasConfig::ownedTopLevelKeys()) allowed.push_back(key);
+  top.allowOnly(allowed);
+  CaseSettings c;
+  c.liggghts = readLiggghts(top.map("liggghts"));
+  c.time = readTime(top.map("time"));
+  if (top.has("coupling")) c.coupling = readCoupling(top.map("coupling"));
+  if (top.has("output")) c.output = readOutput(top.map("output"));
+  if (top.has("monitors")) c.monitors = readMonitors(top.map("monitors"), root["monitors"]);
+  return c;
+}
+
+CaseDefinition readCase(const std::string& case_folder) {
+  const std::string path = case_folder + "/case.yaml";
+  if (!std::ifstream(path)) throw ConfigError("cannot read '" + path + "': a case folder must contain case.yaml");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path + " is not valid YAML: " + e.what());
+  }
+  CaseDefinition c;
+  c.folder = case_folder;
+  c.settings = readCouplingSettings(root);
+  c.gas = cfd::GasConfig(root).settings();
+  const std::string script = case_folder + "/" + c.settings.liggghts.script;
+  if (!std::ifstream(script))
+    throw ConfigError("liggghts.script: cannot read '" + script + "' (path relative to the case folder)");
+  return c;
+}
+
+int TimeSettings::demStepsPerGasStep() const { return static_cast<int>(std::lround(gas_step / dem_step)); }
+
+}  // namespace parcelflow::coupling

@@ -1,0 +1,58 @@
+// Settings of a coupled case that belong to the coupling layer: the keys `liggghts`, `time`, `coupling`,
+// `output` and `monitors` of case.yaml (the gas keys belong to parcelflow::cfd::GasConfig). Every key, its
+// unit and default is documented in coupling/README.md.
+#pragma once
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace parcelflow::coupling {
+
+struct LiggghtsSettings {
+  std::string script;                                      // path relative to the case folder
+  std::vector<std::pair<std::string, std::string>> variables;
+};
+
+struct TimeSettings {
+  double end = 0.0;          // simulated time of the coupled phase [s]
+  double gas_step = 0.0;     // gas time step = coupling interval [s]
+  double dem_step = 0.0;     // DEM time step [s]; gas_step must be a whole multiple of it
+  int demStepsPerGasStep() const;
+};
+
+struct KernelSettings {
+  std::string type = "gaussian";  // gaussian | centroid
+  double width = 1.0;             // a in exp(-a |dx|^2 / h^2)
+  int radius = 2;                 // stencil half-width in cells
+};
+
+struct CouplingSettings {
+  std::string drag = "WenYu";
+  KernelSettings kernel;
+  double gas_fraction_floor = 0.35;  // a_g is never below this; every hit is counted and reported
+};
+
+struct OutputSettings {
+  std::string folder = "output";
+  double fields_interval = 0.0;    // s of simulated time between HDF5 field/parcel writes (0: only at end)
+  double monitor_interval = 0.01;  // s between monitor rows
+  double progress_interval = 5.0;  // s of wall time between progress lines
+};
+
+struct MonitorSettings {
+  std::vector<double> pressure_planes;         // heights z [m] where mean p and a_g are recorded
+  std::array<double, 2> bed_pressure_drop{0.0, 0.0};  // heights (low, high) of the bed pressure drop
+  bool has_bed_pressure_drop = false;
+};
+
+struct CaseSettings {
+  LiggghtsSettings liggghts;
+  TimeSettings time;
+  CouplingSettings coupling;
+  OutputSettings output;
+  MonitorSettings monitors;
+};
+
+}  // namespace parcelflow::coupling

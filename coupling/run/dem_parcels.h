@@ -1,0 +1,41 @@
+// The coupling layer's only window into LIGGGHTS' parcels: reads positions, velocities, dp and np of the
+// local parcels after each DEM advance (LIGGGHTS moves and reorders its arrays on every run), and writes
+// the implicit drag coefficient, gas velocity and pressure-gradient force into the integrator fix.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "parcel_mesh_coupler.h"
+
+namespace LAMMPS_NS { class LAMMPS; }
+namespace parcelflow::plugins { class FixParcel; class FixParcelImplicitDrag; }
+
+namespace parcelflow::coupling {
+
+class DemParcels {
+ public:
+  // Throws cfd::ConfigError when the script lacks `fix ... parcel` or `fix ... parcel/implicit_drag`.
+  explicit DemParcels(LAMMPS_NS::LAMMPS* lmp);
+
+  // Copies the local parcels; the batch points into this object and stays valid until the next read.
+  ParcelBatch read();
+  // Sets kappa, u_f and the pressure force -np V_p grad p of the parcels of the last read().
+  void write(const GasAtParcels& gas);
+
+  long globalCount() const;
+  int ntypes() const;
+  // Mass-weighted mean height of each atom type (index type-1); NaN for an empty type. Collective.
+  std::vector<double> meanHeightPerType() const;
+  double totalMass() const;  // collective
+  // Weight minus buoyancy, sum of (m - rho_g V) g over parcels with centre above z [N]. Collective.
+  double buoyantWeightAbove(double z, double gas_density, double gravity) const;
+
+ private:
+  LAMMPS_NS::LAMMPS* lmp_;
+  plugins::FixParcel* parcel_ = nullptr;
+  plugins::FixParcelImplicitDrag* drag_ = nullptr;
+  std::vector<double> x_, v_, dp_, np_;
+};
+
+}  // namespace parcelflow::coupling

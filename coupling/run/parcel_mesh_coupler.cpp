@@ -1,0 +1,157 @@
+#include "parcel_mesh_coupler.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <limits>
+
+#include "particle_mesh_transfer.hpp"
+
+namespace parcelflow::coupling {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwnerMap& owners, TransferKernel kernel,
+                                     DragLaw drag, DragLimits limits, GasProperties gas)
+    : grid_(grid),
+      owners_(owners),
+      exchange_(owners),
+      kernel_(std::move(kernel)),
+      drag_(std::move(drag)),
+      limits_(limits),
+      gas_(gas),
+      cell_volume_(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]),
+      slot_of_cell_(owners.backgroundSize(), -1) {
+  grid_.validate();
+  int rank = 0;
+  MPI_Comm_rank(owners.comm(), &rank);
+  n_owned_ = 0;
+  for (long c = 0; c < owners.backgroundSize(); ++c)
+    if (owners.ownerRank(c) == rank) ++n_owned_;
+}
+
+int ParcelMeshCoupler::nOwned() const { return n_owned_; }
+
+TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
+  for (long cell : touched_) slot_of_cell_[cell] = -1;
+  touched_.clear();
+  parcels_ = parcels;
+  auto assignSlot = [this](int i, int j, int k) {
+    const long cell = i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k);
+    if (owners_.ownerRank(cell) < 0) return -1;
+    int& slot = slot_of_cell_[cell];
+    if (slot < 0) {
+      slot = static_cast<int>(touched_.size());
+      touched_.push_back(cell);
+    }
+    return slot;
+  };
+  return forEachParcelStencil(kernel_, grid_, assignSlot, parcels.size, parcels.x, [](std::size_t, const Stencil&) {});
+}
+
+std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& owned, int width) const {
+  std::vector<double> values;
+  exchange_.fetchFromOwners(touched_, owned, width, values);
+  return values;
+}
+
+void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, int width,
+                                        std::vector<double>& owned) const {
+  std::vector<double> on_touched(touched_.size() * width, 0.0);
+  auto slot = [this](int i, int j, int k) {
+    return slot_of_cell_[i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k)];
+  };
+  depositParcels(kernel_, grid_, slot, parcels_.size, parcels_.x, width, per_parcel.data(), on_touched.data());
+  owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
+  exchange_.sumToOwners(touched_, on_touched, width, owned);
+}
+
+std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>& owned, int width,
+                                                       double orphan_value) const {
+  const std::vector<double> on_touched = fetchTouched(owned, width);
+  std::vector<double> at_parcels(parcels_.size * width);
+  auto slot = [this](int i, int j, int k) {
+    return slot_of_cell_[i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k)];
+  };
+  gatherToParcels(kernel_, grid_, slot, parcels_.size, parcels_.x, width, on_touched.data(), at_parcels.data(),
+                  orphan_value);
+  return at_parcels;
+}
+
+void ParcelMeshCoupler::depositSolids(std::vector<double>& owned_solid_fraction) {
+  std::vector<double> volume(parcels_.size);
+  for (std::size_t p = 0; p < parcels_.size; ++p)
+    volume[p] = parcels_.np[p] * kPi / 6.0 * std::pow(parcels_.dp[p], 3);
+  depositToOwners(volume, 1, owned_solid_fraction);
+  for (double& a : owned_solid_fraction) a /= cell_volume_;
+}
+
+DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fraction,
+                                         const std::vector<double>& owned_velocity, SolidsOnCells& solids,
+                                         GasAtParcels& at_parcels) {
+  const std::size_t n = parcels_.size;
+  std::vector<double> owned(static_cast<std::size_t>(n_owned_) * 4);
+  for (int c = 0; c < n_owned_; ++c) {
+    owned[4 * c] = owned_gas_fraction[c];
+    for (int d = 0; d < 3; ++d) owned[4 * c + 1 + d] = owned_velocity[3 * c + d];
+  }
+  // Orphans get NaN: the drag law counts them as invalid input and gives them kappa = 0.
+  const std::vector<double> gas = gatherFromOwned(owned, 4, std::numeric_limits<double>::quiet_NaN());
+  at_parcels.gas_fraction.resize(n);
+  std::vector<double> slip(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    at_parcels.gas_fraction[p] = gas[4 * p];
+    double s2 = 0.0;
+    for (int d = 0; d < 3; ++d) s2 += std::pow(gas[4 * p + 1 + d] - parcels_.v[3 * p + d], 2);
+    slip[p] = std::sqrt(s2);
+  }
+  ParcelDragBatch batch;
+  batch.size = n;
+  batch.alphaG = at_parcels.gas_fraction.data();
+  batch.slip = slip.data();
+  batch.dp = parcels_.dp;
+  batch.np = parcels_.np;
+  batch.rhoG = gas_.density;
+  batch.muG = gas_.viscosity;
+  at_parcels.kappa.assign(n, 0.0);
+  std::vector<double> momentum(4 * n);
+  const DragStats stats = forEachParcel(drag_, batch, limits_, [&](std::size_t p, double, double kappa) {
+    at_parcels.kappa[p] = kappa;
+    momentum[4 * p] = kappa;
+    for (int d = 0; d < 3; ++d) momentum[4 * p + 1 + d] = kappa * parcels_.v[3 * p + d];
+  });
+  std::vector<double> deposited;
+  depositToOwners(momentum, 4, deposited);
+  solids.beta.resize(n_owned_);
+  solids.beta_us.resize(3 * static_cast<std::size_t>(n_owned_));
+  for (int c = 0; c < n_owned_; ++c) {
+    solids.beta[c] = deposited[4 * c] / cell_volume_;
+    for (int d = 0; d < 3; ++d) solids.beta_us[3 * c + d] = deposited[4 * c + 1 + d] / cell_volume_;
+  }
+  return stats;
+}
+
+void ParcelMeshCoupler::gatherGas(const std::vector<double>& owned_velocity, const std::vector<double>& owned_grad_p,
+                                  GasAtParcels& at_parcels) {
+  std::vector<double> owned(static_cast<std::size_t>(n_owned_) * 6);
+  for (int c = 0; c < n_owned_; ++c)
+    for (int d = 0; d < 3; ++d) {
+      owned[6 * c + d] = owned_velocity[3 * c + d];
+      owned[6 * c + 3 + d] = owned_grad_p[3 * c + d];
+    }
+  // Orphans (counted in beginStep) feel no gas: zero velocity and pressure gradient, kappa 0.
+  const std::vector<double> gas = gatherFromOwned(owned, 6, 0.0);
+  at_parcels.gas_velocity.resize(3 * parcels_.size);
+  at_parcels.grad_p.resize(3 * parcels_.size);
+  for (std::size_t p = 0; p < parcels_.size; ++p)
+    for (int d = 0; d < 3; ++d) {
+      at_parcels.gas_velocity[3 * p + d] = gas[6 * p + d];
+      at_parcels.grad_p[3 * p + d] = gas[6 * p + 3 + d];
+    }
+}
+
+}  // namespace parcelflow::coupling

@@ -1,0 +1,96 @@
+// Particle <-> mesh transfer of one coupling step across MPI ranks (DESIGN sections 4 and 7).
+//
+// Parcels live where LIGGGHTS' decomposition puts them, gas cells where METIS puts them. Each rank finds
+// the background cells its parcels' kernel stencils touch, deposits into those "touched" cells locally,
+// and CellExchange sums them into the owning ranks (and fetches owned gas values back over the same
+// pattern). Weights are renormalised over all fluid cells of the stencil (a cell is fluid if it has an
+// owner anywhere), so deposited volume and momentum are conserved exactly, at walls and across ranks.
+//
+// One step: beginStep(parcels) -> depositSolids -> computeDrag -> (gas advances) -> gatherGas.
+#pragma once
+
+#include <vector>
+
+#include "background_grid.hpp"
+#include "cell_exchange.h"
+#include "parcel_drag.hpp"
+#include "stencil.hpp"
+#include "transfer_kernel.hpp"
+
+namespace parcelflow::coupling {
+
+// The local parcels of this rank; vectors interleaved xyz (x[3p + d]).
+struct ParcelBatch {
+  std::size_t size = 0;
+  const double* x = nullptr;
+  const double* v = nullptr;
+  const double* dp = nullptr;  // real particle diameter
+  const double* np = nullptr;  // real particles per parcel
+};
+
+struct GasProperties {
+  double density = 1.2;
+  double viscosity = 1.8e-5;
+};
+
+// What the gas solver needs from the parcels, per owned cell.
+struct SolidsOnCells {
+  std::vector<double> solid_fraction;  // a_s (not floored)
+  std::vector<double> beta;            // sum of w kappa / V_cell   [kg/(m^3 s)]
+  std::vector<double> beta_us;         // sum of w kappa v / V_cell, interleaved xyz
+};
+
+// What the parcels need from the gas, per parcel (interleaved xyz where 3 components).
+struct GasAtParcels {
+  std::vector<double> kappa;        // implicit drag coefficient [kg/s]
+  std::vector<double> gas_velocity;
+  std::vector<double> grad_p;
+  std::vector<double> gas_fraction;
+};
+
+class ParcelMeshCoupler {
+ public:
+  ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwnerMap& owners, TransferKernel kernel, DragLaw drag,
+                    DragLimits limits, GasProperties gas);
+
+  // Finds the touched cells of this rank's parcels. Call once per coupling step, after the DEM moved.
+  TransferStats beginStep(const ParcelBatch& parcels);
+
+  // a_s on owned cells from the parcels' volumes np V_p.
+  void depositSolids(std::vector<double>& owned_solid_fraction);
+
+  // Gathers a_g and u (owned cell fields, u interleaved xyz) at the parcels, evaluates the drag law
+  // (real diameter dp, local a_g, slip) into kappa, and deposits kappa and kappa v to the owned cells.
+  DragStats computeDrag(const std::vector<double>& owned_gas_fraction, const std::vector<double>& owned_velocity,
+                        SolidsOnCells& solids, GasAtParcels& at_parcels);
+
+  // Gas velocity and pressure gradient (owned cell fields, interleaved xyz) at the parcels.
+  void gatherGas(const std::vector<double>& owned_velocity, const std::vector<double>& owned_grad_p,
+                 GasAtParcels& at_parcels);
+
+  std::size_t touchedCells() const { return touched_.size(); }
+  double cellVolume() const { return cell_volume_; }
+
+ private:
+  // Values of `width` components per owned cell -> the same values on this rank's touched cells.
+  std::vector<double> fetchTouched(const std::vector<double>& owned, int width) const;
+  void depositToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned) const;
+  std::vector<double> gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value) const;
+  int nOwned() const;
+
+  BackgroundGrid grid_;
+  const CellOwnerMap& owners_;
+  CellExchange exchange_;
+  TransferKernel kernel_;
+  DragLaw drag_;
+  DragLimits limits_;
+  GasProperties gas_;
+  double cell_volume_;
+  int n_owned_;
+
+  ParcelBatch parcels_;
+  std::vector<int> slot_of_cell_;   // background cell -> touched slot, -1 when untouched this step
+  std::vector<long> touched_;       // touched slot -> background cell
+};
+
+}  // namespace parcelflow::coupling
