@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""Verification of the coupled solver against independently computed values (issue 4).
+
+  terminal NP   one parcel (np = NP, real diameter 100 um) settling in still air must reach the Wen-Yu
+                terminal velocity, solved here by bisection, within 1 %.
+  packed        the fluidized_column bed at 0.3 m/s (below minimum fluidization) with the Ergun drag law:
+                the pressure drop between the cell layers at 6 and 14 mm must equal, within 3 %, the
+                Ergun pressure drop for the bed's measured voidage. The voidage is read per cell from the
+                HDF5 fields; the side walls loosen the packing (gas fraction 0.52 in the corner columns,
+                0.38 in the centre), so the prediction lets each cell column carry the flow that gives the
+                same pressure drop (parallel channels). The Ergun value at the layer-mean voidage is
+                printed too.
+
+usage: verify_coupled.py PARCELFLOW MPIEXEC... -- CHECK [ARG]
+"""
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import yaml
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CASES = os.path.join(HERE, "..", "..", "..", "cases")
+RHO_P, RHO_G, MU, G = 2500.0, 1.2, 1.8e-5, 9.81
+
+
+def run_case(parcelflow, launcher, source, edit):
+    """Copies case folder `source`, applies edit(case_yaml_dict), runs it, returns the output folder."""
+    work = tempfile.mkdtemp(prefix="pf_verify_")
+    case = os.path.join(work, "case")
+    shutil.copytree(source, case, ignore=shutil.ignore_patterns("output"))
+    path = os.path.join(case, "case.yaml")
+    settings = yaml.safe_load(open(path))
+    edit(settings)
+    yaml.safe_dump(settings, open(path, "w"))
+    out = os.path.join(work, "output")
+    done = subprocess.run(launcher + [parcelflow, "run", case, "--output", out], capture_output=True, text=True,
+                          errors="replace")
+    if done.returncode != 0:
+        sys.exit(f"FAIL: parcelflow exited with {done.returncode}\n{done.stdout[-3000:]}{done.stderr[-2000:]}")
+    summary = [l for l in done.stdout.splitlines() if l.startswith("parcelflow: done")]
+    print(summary[-1] if summary else "(no summary line)")
+    return out
+
+
+def wen_yu_terminal_velocity(dp):
+    """Still air, a_g -> 1: (rho_p - rho_g) V g = pi/8 d^2 C_D rho_g v^2, C_D = 24/Re (1 + 0.15 Re^0.687)."""
+    weight = (RHO_P - RHO_G) * math.pi / 6 * dp**3 * G
+    lo, hi = 1e-9, 100.0
+    for _ in range(200):
+        v = 0.5 * (lo + hi)
+        re = RHO_G * v * dp / MU
+        cd = 24 / re * (1 + 0.15 * re**0.687) if re < 1000 else 0.44
+        lo, hi = (v, hi) if math.pi / 8 * dp * dp * cd * RHO_G * v * v < weight else (lo, v)
+    return lo
+
+
+def check_terminal(parcelflow, launcher, np_):
+    dp = 1e-4
+    def edit(s):
+        s["liggghts"]["variables"].update({"np": str(np_), "diameter": repr(dp * np_ ** (1 / 3))})
+    out = run_case(parcelflow, launcher, os.path.join(HERE, "single_parcel"), edit)
+    rows = [(float(r["time"]), float(r["mean_z_type1"])) for r in csv.DictReader(open(os.path.join(out, "monitors.csv")))]
+    late = [(t, z) for t, z in rows if t >= 0.3]  # after more than 5 response times
+    mt = sum(t for t, _ in late) / len(late)
+    mz = sum(z for _, z in late) / len(late)
+    v = -sum((t - mt) * (z - mz) for t, z in late) / sum((t - mt) ** 2 for t, _ in late)
+    expected = wen_yu_terminal_velocity(dp)
+    error = v / expected - 1
+    print(f"[measured] terminal velocity, np = {np_}: {v:.6f} m/s, Wen-Yu {expected:.6f} m/s, error {100 * error:+.3f} %")
+    return abs(error) < 0.01
+
+
+def ergun_gradient(eps, u, dp=1e-3):
+    return 150 * MU * u * (1 - eps) ** 2 / (eps**3 * dp * dp) + 1.75 * RHO_G * u * u * (1 - eps) / (eps**3 * dp)
+
+
+def bisect(f, lo, hi, target):
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) < target else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def check_packed(parcelflow, launcher):
+    u = 0.3
+    def edit(s):
+        s["time"]["end"] = 0.06
+        s["coupling"]["drag"] = "Ergun"
+        s["boundaries"]["zmin"]["superficial_velocity"] = [0, 0, u]
+        s["monitors"]["pressure_planes"] = [0.006, 0.014, 0.05]
+    out = run_case(parcelflow, launcher, os.path.join(CASES, "fluidized_column"), edit)
+    last = list(csv.DictReader(open(os.path.join(out, "monitors.csv"))))[-1]
+    dz = 0.004
+    measured = float(last["p_z0.006"]) - float(last["p_z0.014"]) - RHO_G * G * 2 * dz
+    fields = h5py.File(os.path.join(out, "fields_000000.h5"))
+    ids = h5py.File(os.path.join(out, "fields_mesh.h5"))["global_id"][:]
+    eps = fields["gas_fraction"][:]
+    nx, ny = 5, 5
+    # layers 1, 2, 3 (centres 6, 10, 14 mm): the drop between the outer centres spans half of 1 and 3
+    weight = {1: 0.5, 2: 1.0, 3: 0.5}
+    columns = {}
+    for gid, e in zip(ids, eps):
+        k = gid // (nx * ny)
+        if k in weight:
+            columns.setdefault(gid % (nx * ny), []).append((weight[k], e))
+    def column_drop(col, uc):
+        return sum(w * dz * ergun_gradient(e, uc) for w, e in col)
+    def mean_flow(drop):
+        return sum(bisect(lambda uc: column_drop(col, uc), 0.0, 50.0, drop) for col in columns.values()) / len(columns)
+    predicted = bisect(mean_flow, 0.0, 1e5, u)
+    layer_mean = sum(w * e for col in columns.values() for w, e in col) / sum(w for col in columns.values() for w, _ in col)
+    uniform = 2 * dz * ergun_gradient(layer_mean, u)
+    error = measured / predicted - 1
+    print(f"[measured] packed bed at {u} m/s: pressure drop {measured:.3f} Pa; Ergun with each cell column's "
+          f"voidage {predicted:.3f} Pa (error {100 * error:+.2f} %); Ergun at the mean voidage {layer_mean:.4f}: "
+          f"{uniform:.3f} Pa (ratio {measured / uniform:.3f}, wall channelling)")
+    return abs(error) < 0.03
+
+
+def main():
+    sep = sys.argv.index("--")
+    parcelflow, launcher = sys.argv[1], sys.argv[2:sep]
+    check, args = sys.argv[sep + 1], sys.argv[sep + 2:]
+    ok = check_terminal(parcelflow, launcher, int(args[0])) if check == "terminal" else check_packed(parcelflow, launcher)
+    print(f"{1 if ok else 0} passed, {0 if ok else 1} failed")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
