@@ -10,7 +10,6 @@
 #include "comm.h"
 #include "error.h"
 #include "group.h"
-#include "memory.h"
 #include "modify.h"
 #include "parcel_math.h"
 
@@ -32,7 +31,7 @@ std::vector<std::string> settings_args(int narg, char** arg)
 
 }  // namespace
 
-FixParcel::FixParcel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
+FixParcel::FixParcel(LAMMPS* lmp, int narg, char** arg) : PerAtomColumnsFix(lmp, narg, arg, NCOLUMNS)
 {
   try {
     settings_ = parse_parcel_settings(settings_args(narg, arg));
@@ -50,29 +49,13 @@ FixParcel::FixParcel(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
     sequence_ = std::make_unique<SizeClassSequence>(fractions, settings_.seed);
   }
 
-  peratom_flag = 1;
-  size_peratom_cols = NCOLUMNS;
-  peratom_freq = 1;
-  create_attribute = 1;  // set_arrays() for atoms created later, and for all atoms at the first setup
   restart_global = 1;
-  restart_peratom = 1;
-
-  grow_arrays(atom->nmax);
-  atom->add_callback(0);  // grow, copy, exchange
-  atom->add_callback(1);  // restart
   // Atoms that exist now get their parcel values at the first setup (Modify::setup calls set_arrays for
   // the group, unless a restart file restored them), so a later `set ... diameter` is taken into account.
   for (int i = 0; i < atom->nlocal; ++i) {
     data_[i][DP] = 2.0 * atom->radius[i];
     data_[i][NP] = 1.0;
   }
-}
-
-FixParcel::~FixParcel()
-{
-  atom->delete_callback(id, 0);
-  atom->delete_callback(id, 1);
-  memory->destroy(data_);
 }
 
 void FixParcel::fail(const std::string& msg)
@@ -167,57 +150,7 @@ void FixParcel::setup(int)
 
 void FixParcel::pre_force(int) { resolve_pending(); }
 
-void FixParcel::grow_arrays(int nmax)
-{
-  memory->grow(data_, nmax, NCOLUMNS, "parcel:data");
-  array_atom = data_;
-}
-
-void FixParcel::copy_arrays(int i, int j, int)
-{
-  data_[j][DP] = data_[i][DP];
-  data_[j][NP] = data_[i][NP];
-}
-
 void FixParcel::set_arrays(int i) { assign(i); }
-
-int FixParcel::pack_exchange(int i, double* buf)
-{
-  buf[0] = data_[i][DP];
-  buf[1] = data_[i][NP];
-  return NCOLUMNS;
-}
-
-int FixParcel::unpack_exchange(int nlocal, double* buf)
-{
-  data_[nlocal][DP] = buf[0];
-  data_[nlocal][NP] = buf[1];
-  ++atoms_received_;
-  return NCOLUMNS;
-}
-
-int FixParcel::pack_restart(int i, double* buf)
-{
-  buf[0] = NCOLUMNS + 1;  // number of values including this one
-  buf[1] = data_[i][DP];
-  buf[2] = data_[i][NP];
-  return NCOLUMNS + 1;
-}
-
-void FixParcel::unpack_restart(int nlocal, int nth)
-{
-  double** extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; ++k) m += static_cast<int>(extra[nlocal][m]);
-  ++m;
-  data_[nlocal][DP] = extra[nlocal][m++];
-  data_[nlocal][NP] = extra[nlocal][m++];
-}
-
-int FixParcel::size_restart(int) { return NCOLUMNS + 1; }
-int FixParcel::maxsize_restart() { return NCOLUMNS + 1; }
-
-double FixParcel::memory_usage() { return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double); }
 
 // ------------------------------------------------------------------ global restart
 

@@ -14,18 +14,17 @@
 #include <vector>
 
 #include "contact_scaling.h"
-#include "fix.h"
+#include "per_atom_columns_fix.h"
 #include "parcel_settings.h"
 #include "size_class_sequence.h"
 
 namespace parcelflow::plugins {
 
-class FixParcel : public LAMMPS_NS::Fix {
+class FixParcel : public PerAtomColumnsFix {
  public:
   enum Column { DP = 0, NP = 1, NCOLUMNS = 2 };
 
   FixParcel(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
-  ~FixParcel() override;
 
   int setmask() override;
   void post_create() override;
@@ -34,26 +33,14 @@ class FixParcel : public LAMMPS_NS::Fix {
   void setup(int vflag) override;
   void pre_force(int vflag) override;
 
-  void grow_arrays(int nmax) override;
-  void copy_arrays(int i, int j, int delflag) override;
   void set_arrays(int i) override;
-  int pack_exchange(int i, double* buf) override;
-  int unpack_exchange(int nlocal, double* buf) override;
-  int pack_restart(int i, double* buf) override;
-  void unpack_restart(int nlocal, int nth) override;
-  int size_restart(int i) override;
-  int maxsize_restart() override;
   void write_restart(FILE* fp) override;
   void restart(char* buf) override;
-  double memory_usage() override;
 
   // Coupling interface: local atoms 0..nlocal-1; re-fetch after every run (atoms move and reorder).
   double dp(int i) const { return data_[i][DP]; }
   double np(int i) const { return data_[i][NP]; }
-  double** peratom() { return data_; }
   const ParcelSettings& settings() const { return settings_; }
-  // atoms received from other ranks by this rank since the fix was created (test of migration)
-  long atoms_received() const { return atoms_received_; }
   // parcels that got a size class from the distribution so far (all ranks)
   double parcels_assigned() const { return assigned_; }
 
@@ -66,9 +53,7 @@ class FixParcel : public LAMMPS_NS::Fix {
 
   ParcelSettings settings_;
   std::unique_ptr<SizeClassSequence> sequence_;
-  double** data_ = nullptr;
   double assigned_ = 0.0;          // parcels numbered in the size-class sequence (global)
-  long atoms_received_ = 0;
   bool needs_sequence_ = false;    // constant_diameter with more than one size class
   ContactScaling scaling_;
   bool printed_ = false;

@@ -1,11 +1,8 @@
 #include "fix_parcel_implicit_drag.h"
 
-#include <cstring>
-
 #include "atom.h"
 #include "error.h"
 #include "force.h"
-#include "memory.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -17,28 +14,14 @@ namespace {
 constexpr double kSphereInertia = 0.4;  // I = 0.4 m r^2
 }
 
-FixParcelImplicitDrag::FixParcelImplicitDrag(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg)
+FixParcelImplicitDrag::FixParcelImplicitDrag(LAMMPS* lmp, int narg, char** arg)
+    : PerAtomColumnsFix(lmp, narg, arg, NCOLUMNS)
 {
   if (narg != 3)
     error->all(FLERR, "fix parcel/implicit_drag takes no arguments (usage: fix ID group parcel/implicit_drag); "
                       "the coupling layer sets kappa, u_f and f_p");
   time_integrate = 1;
-  peratom_flag = 1;
-  size_peratom_cols = NCOLUMNS;
-  peratom_freq = 1;
-  create_attribute = 1;
-  restart_peratom = 1;
-  grow_arrays(atom->nmax);
-  atom->add_callback(0);
-  atom->add_callback(1);
   for (int i = 0; i < atom->nlocal; ++i) set_arrays(i);
-}
-
-FixParcelImplicitDrag::~FixParcelImplicitDrag()
-{
-  atom->delete_callback(id, 0);
-  atom->delete_callback(id, 1);
-  memory->destroy(data_);
 }
 
 int FixParcelImplicitDrag::setmask() { return INITIAL_INTEGRATE | FINAL_INTEGRATE; }
@@ -85,48 +68,9 @@ void FixParcelImplicitDrag::initial_integrate(int) { halfStep(true); }
 
 void FixParcelImplicitDrag::final_integrate() { halfStep(false); }
 
-void FixParcelImplicitDrag::grow_arrays(int nmax) { memory->grow(data_, nmax, NCOLUMNS, "parcel/implicit_drag:data"); array_atom = data_; }
-
-void FixParcelImplicitDrag::copy_arrays(int i, int j, int)
-{
-  std::memcpy(data_[j], data_[i], NCOLUMNS * sizeof(double));
-}
-
 void FixParcelImplicitDrag::set_arrays(int i)
 {
   for (int c = 0; c < NCOLUMNS; ++c) data_[i][c] = 0.0;
 }
-
-int FixParcelImplicitDrag::pack_exchange(int i, double* buf)
-{
-  std::memcpy(buf, data_[i], NCOLUMNS * sizeof(double));
-  return NCOLUMNS;
-}
-
-int FixParcelImplicitDrag::unpack_exchange(int nlocal, double* buf)
-{
-  std::memcpy(data_[nlocal], buf, NCOLUMNS * sizeof(double));
-  return NCOLUMNS;
-}
-
-int FixParcelImplicitDrag::pack_restart(int i, double* buf)
-{
-  buf[0] = NCOLUMNS + 1;  // values in this record, including this one
-  std::memcpy(buf + 1, data_[i], NCOLUMNS * sizeof(double));
-  return NCOLUMNS + 1;
-}
-
-void FixParcelImplicitDrag::unpack_restart(int nlocal, int nth)
-{
-  double** extra = atom->extra;
-  int m = 0;
-  for (int k = 0; k < nth; ++k) m += static_cast<int>(extra[nlocal][m]);
-  std::memcpy(data_[nlocal], &extra[nlocal][m + 1], NCOLUMNS * sizeof(double));
-}
-
-int FixParcelImplicitDrag::size_restart(int) { return NCOLUMNS + 1; }
-int FixParcelImplicitDrag::maxsize_restart() { return NCOLUMNS + 1; }
-
-double FixParcelImplicitDrag::memory_usage() { return static_cast<double>(atom->nmax) * NCOLUMNS * sizeof(double); }
 
 }  // namespace parcelflow::plugins

@@ -10,16 +10,15 @@
 // Per-atom output (dump f_ID[1..7]): kappa, u_f (3), f_p (3).
 #pragma once
 
-#include "fix.h"
+#include "per_atom_columns_fix.h"
 
 namespace parcelflow::plugins {
 
-class FixParcelImplicitDrag : public LAMMPS_NS::Fix {
+class FixParcelImplicitDrag : public PerAtomColumnsFix {
  public:
   enum Column { KAPPA = 0, UFX, UFY, UFZ, FPX, FPY, FPZ, NCOLUMNS };
 
   FixParcelImplicitDrag(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
-  ~FixParcelImplicitDrag() override;
 
   int setmask() override;
   void init() override;
@@ -27,24 +26,11 @@ class FixParcelImplicitDrag : public LAMMPS_NS::Fix {
   void final_integrate() override;
   void reset_dt() override;
 
-  void grow_arrays(int nmax) override;
-  void copy_arrays(int i, int j, int delflag) override;
-  void set_arrays(int i) override;
-  int pack_exchange(int i, double* buf) override;
-  int unpack_exchange(int nlocal, double* buf) override;
-  int pack_restart(int i, double* buf) override;
-  void unpack_restart(int nlocal, int nth) override;
-  int size_restart(int i) override;
-  int maxsize_restart() override;
-  double memory_usage() override;
-
-  // Coupling interface: row i (local atom) holds the columns above; re-fetch after every run.
-  double** peratom() { return data_; }
+  void set_arrays(int i) override;  // new atoms feel no gas until the coupling sets their columns
 
  private:
   void halfStep(bool move);
 
-  double** data_ = nullptr;
   double dtv_ = 0.0, dtf_ = 0.0;
 };
 

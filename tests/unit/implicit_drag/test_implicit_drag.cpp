@@ -101,7 +101,9 @@ TEST(ImplicitDrag, StaysStableAndMonotoneForStiffDrag) {
   for (int n = 0; n < 20; ++n) {
     p.steps(1);
     const double distance = std::abs(p.vz() - v_terminal);
-    if (n == 0) EXPECT_LT(distance, 0.01 * previous);  // one step removes 99 % of the initial slip
+    if (n == 0) {
+      EXPECT_LT(distance, 0.01 * previous);  // one step removes 99 % of the initial slip
+    }
     EXPECT_LE(distance, previous) << "step " << n;
     previous = distance;
   }
