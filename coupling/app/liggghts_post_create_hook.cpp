@@ -6,7 +6,8 @@
 // `clear`, and it calls it through the dynamic linker (a default-visibility function of libliggghts.so).
 // Defining it here, in the executable, interposes it: we run LIGGGHTS' own post_create (looked up with
 // dlsym(RTLD_NEXT)) and then register our styles, the moment the registries exist again. This is the
-// ELF rule that the executable's definition wins, nothing more; test_dem_command checks it after `clear`.
+// ELF rule that the executable's definition wins, nothing more; tests/regression/dem/check_command_line.py
+// checks it after `clear`.
 #include <dlfcn.h>
 
 #include <cstdio>

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The parcelflow command line: help, version, usage errors (exit code 2), -var passed to LIGGGHTS."""
+"""The parcelflow command line: help, version, usage errors (exit code 2), -var passed to LIGGGHTS, and\nparcelflow's LIGGGHTS styles available before and after `clear`."""
 import os
 import subprocess
 import sys
@@ -36,6 +36,23 @@ with tempfile.TemporaryDirectory() as tmp:
           ["value of answer: 42"], cwd=tmp)
     check("dem script error reaches the user", ["dem", "in.var"], 1, ["Substitution for illegal variable"],
           cwd=tmp)
+
+# parcelflow's styles exist at start-up and again after `clear` (the post_create hook re-registers them).
+PARCEL_SCRIPT = """atom_style granular
+atom_modify map array
+units si
+region box block 0 0.01 0 0.01 0 0.01 units box
+create_box 1 box
+fix p all parcel mode constant_np np 8
+fix i all parcel/implicit_drag
+print "styles registered: ${round}"
+"""
+with tempfile.TemporaryDirectory() as tmp:
+    with open(os.path.join(tmp, "in.clear"), "w") as f:
+        f.write(PARCEL_SCRIPT.replace("${round}", "before clear") + "clear\n" +
+                PARCEL_SCRIPT.replace("${round}", "after clear"))
+    check("parcel styles before and after clear", ["dem", "in.clear"], 0,
+          ["styles registered: before clear", "styles registered: after clear"], cwd=tmp)
 
 failed = results.count(False)
 print(f"{len(results) - failed} passed, {failed} failed")
