@@ -54,6 +54,18 @@ with tempfile.TemporaryDirectory() as tmp:
     check("parcel styles before and after clear", ["dem", "in.clear"], 0,
           ["styles registered: before clear", "styles registered: after clear"], cwd=tmp)
 
+# A wrong key in case.yaml stops `parcelflow run` with exit code 2 before LIGGGHTS starts.
+with tempfile.TemporaryDirectory() as tmp:
+    with open(os.path.join(tmp, "case.yaml"), "w") as f:
+        f.write("liggghts: {script: in.bed}\ntime: {end: 1, gas_step: 1.0e-4, dem_step: 1.0e-5}\n"
+                "coupling: {drag: Stokes}\nmesh: {lengths: [1, 1, 1], cells: [2, 2, 2]}\n")
+    open(os.path.join(tmp, "in.bed"), "w").close()
+    check("run with a wrong case key", ["run", tmp, "--output", os.path.join(tmp, "out")], 2,
+          ["coupling.drag", "Stokes", "WenYu"])
+    started = os.path.exists(os.path.join(tmp, "out", "log.liggghts"))
+    results.append(not started)
+    print(f"{'FAIL' if started else 'ok  '} LIGGGHTS did not start for the wrong case")
+
 failed = results.count(False)
 print(f"{len(results) - failed} passed, {failed} failed")
 sys.exit(1 if failed else 0)

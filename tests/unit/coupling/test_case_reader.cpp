@@ -1,0 +1,64 @@
+// case.yaml's coupling keys: defaults, and errors that name the key path, the value and what is allowed.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "case_reader.h"
+#include "cfd/config_error.hpp"
+
+namespace pc = parcelflow::coupling;
+
+namespace {
+
+const char* kValid = R"(
+liggghts: {script: bed.in, variables: {np: "8"}}
+time: {end: 1.0, gas_step: 2.0e-4, dem_step: 2.0e-5}
+mesh: {lengths: [0.02, 0.02, 0.1], cells: [5, 5, 25]}
+)";
+
+std::string errorOf(const std::string& extra_yaml) {
+  try {
+    pc::readCouplingSettings(YAML::Load(std::string(kValid) + extra_yaml));
+  } catch (const parcelflow::cfd::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expectMentions(const std::string& message, const std::vector<std::string>& parts) {
+  EXPECT_FALSE(message.empty()) << "no error raised";
+  for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message << "\nlacks: " << part;
+}
+
+}  // namespace
+
+TEST(CaseReader, ReadsValuesAndDefaults) {
+  const pc::CaseSettings s = pc::readCouplingSettings(YAML::Load(kValid));
+  EXPECT_EQ(s.liggghts.script, "bed.in");
+  ASSERT_EQ(s.liggghts.variables.size(), 1u);
+  EXPECT_EQ(s.time.demStepsPerGasStep(), 10);
+  EXPECT_EQ(s.coupling.drag, "WenYu");
+  EXPECT_EQ(s.coupling.kernel.type, "gaussian");
+  EXPECT_FALSE(s.monitors.has_bed_pressure_drop);
+}
+
+TEST(CaseReader, ErrorsNameKeyValueAndAllowed) {
+  expectMentions(errorOf("colling: {drag: WenYu}\n"), {"colling", "coupling"});
+  expectMentions(errorOf("coupling: {drag: Stokes}\n"), {"coupling.drag", "Stokes", "WenYu", "Gidaspow"});
+  expectMentions(errorOf("coupling: {kernel: {type: gaussian, radius: 9}}\n"), {"coupling.kernel.radius", "9"});
+  expectMentions(errorOf("coupling: {gas_fraction_floor: 1.5}\n"), {"coupling.gas_fraction_floor", "1.5"});
+  expectMentions(errorOf("monitors: {bed_pressure_drop: [0.05, 0.01]}\n"), {"monitors.bed_pressure_drop", "z_low < z_high"});
+  expectMentions(errorOf("output: {monitor_interval: -1}\n"), {"output.monitor_interval", "-1"});
+}
+
+TEST(CaseReader, GasStepMustBeAWholeNumberOfDemSteps) {
+  const char* yaml = R"(
+liggghts: {script: bed.in}
+time: {end: 1.0, gas_step: 2.5e-4, dem_step: 1.0e-4}
+)";
+  try {
+    pc::readCouplingSettings(YAML::Load(yaml));
+    FAIL() << "no error raised";
+  } catch (const parcelflow::cfd::ConfigError& e) {
+    expectMentions(e.what(), {"time.gas_step", "2.5", "whole number of DEM steps"});
+  }
+}
