@@ -2,12 +2,40 @@
 
 #include <csignal>
 #include <cstring>
+#include <string>
 
 #include "input.h"
 #include "lammps.h"
 #include "signal_handling.h"
 
 namespace parcelflow::coupling {
+
+namespace {
+
+// A FILE* (glibc cookie stream) that forwards complete lines with ERROR or WARNING to stdout.
+struct LineFilter {
+  std::string pending;
+};
+
+ssize_t filterWrite(void* cookie, const char* data, size_t size) {
+  auto* filter = static_cast<LineFilter*>(cookie);
+  filter->pending.append(data, size);
+  std::size_t end;
+  while ((end = filter->pending.find('\n')) != std::string::npos) {
+    const std::string line = filter->pending.substr(0, end + 1);
+    if (line.find("ERROR") != std::string::npos || line.find("WARNING") != std::string::npos)
+      std::fputs(line.c_str(), stdout);
+    filter->pending.erase(0, end + 1);
+  }
+  return static_cast<ssize_t>(size);
+}
+
+int filterClose(void* cookie) {
+  delete static_cast<LineFilter*>(cookie);
+  return 0;
+}
+
+}  // namespace
 
 LiggghtsInstance::LiggghtsInstance(MPI_Comm world, const std::vector<std::string>& arguments) {
   MPI_Comm_dup(world, &comm_);
@@ -23,6 +51,7 @@ LiggghtsInstance::LiggghtsInstance(MPI_Comm world, const std::vector<std::string
 
 LiggghtsInstance::~LiggghtsInstance() {
   delete lmp_;
+  if (filtered_screen_) std::fclose(filtered_screen_);
   MPI_Comm_free(&comm_);
 }
 
@@ -31,6 +60,18 @@ void LiggghtsInstance::runInputFile() { lmp_->input->file(); }
 void LiggghtsInstance::runFile(const std::string& path) { lmp_->input->file(path.c_str()); }
 
 void LiggghtsInstance::command(const std::string& line) { lmp_->input->one(line.c_str()); }
+
+void LiggghtsInstance::quietCommand(const std::string& line) {
+  if (!lmp_->screen) return command(line);  // this rank prints nothing anyway
+  if (!filtered_screen_) {
+    filtered_screen_ = fopencookie(new LineFilter, "w", cookie_io_functions_t{nullptr, filterWrite, nullptr, filterClose});
+    std::setvbuf(filtered_screen_, nullptr, _IONBF, 0);  // LIGGGHTS may exit right after an ERROR line
+  }
+  std::FILE* screen = lmp_->screen;
+  lmp_->screen = filtered_screen_;
+  command(line);
+  lmp_->screen = screen;
+}
 
 void LiggghtsInstance::installSignalHandlers() {
   struct sigaction interrupt {};

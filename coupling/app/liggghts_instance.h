@@ -5,6 +5,7 @@
 
 #include <mpi.h>
 
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,12 +26,17 @@ class LiggghtsInstance {
   void runInputFile();                 // the file given with -in, as `liggghts -in FILE` does
   void runFile(const std::string& path);
   void command(const std::string& line);
+  // Runs `line` with LIGGGHTS' screen output filtered: only lines holding ERROR or WARNING reach the
+  // terminal (the log file gets everything). The coupled loop's short DEM runs would otherwise print a
+  // thermo header and rows for every coupling step.
+  void quietCommand(const std::string& line);
 
   static void installSignalHandlers();
 
  private:
   MPI_Comm comm_ = MPI_COMM_NULL;
   LAMMPS_NS::LAMMPS* lmp_ = nullptr;
+  std::FILE* filtered_screen_ = nullptr;
 };
 
 }  // namespace parcelflow::coupling

@@ -224,7 +224,7 @@ bool CoupledRun::advance() {
   double t3 = MPI_Wtime();
   s.progress.split.add(Phase::coupling, t3 - t2);
 
-  s.dem->command("run " + std::to_string(s.dem_steps) + " pre no post no");
+  s.dem->quietCommand("run " + std::to_string(s.dem_steps) + " pre no post no");
   double t4 = MPI_Wtime();
   s.progress.split.add(Phase::dem, t4 - t3);
 
