@@ -132,9 +132,6 @@ void CoupledRun::initialize() {
   TransferKernelOptions kernel_options;
   kernel_options.gaussianSharpness = cs.coupling.kernel.width;
   kernel_options.gaussianRadius = cs.coupling.kernel.radius;
-  if (cs.coupling.kernel.type == "gaussian" && cs.coupling.kernel.radius > mesh.ghostLayers())
-    throw cfd::ConfigError("coupling.kernel.radius: " + std::to_string(cs.coupling.kernel.radius) +
-                           " is larger than mesh.ghost_layers (" + std::to_string(mesh.ghostLayers()) + ")");
   s.coupler = std::make_unique<ParcelMeshCoupler>(
       grid, *s.owners, makeTransferKernel(cs.coupling.kernel.type, kernel_options), makeDragLaw(cs.coupling.drag),
       DragLimits{cs.coupling.gas_fraction_floor},
@@ -167,8 +164,7 @@ void CoupledRun::initialize() {
   for (double z : cs.monitors.pressure_planes) columns.push_back("gas_fraction_z" + label(z));
   for (int t = 1; t <= s.parcels->ntypes(); ++t) columns.push_back("mean_z_type" + std::to_string(t));
   for (const char* c : {"gas_fraction_min", "gas_fraction_max", "floor_hits", "drag_floored", "drag_invalid",
-                        "drag_above_one", "orphans",
-                        "lost_parcels", "gas_cfl", "pressure_iterations"})
+                        "drag_above_one", "orphans", "lost_parcels", "gas_cfl", "pressure_iterations"})
     columns.emplace_back(c);
   s.monitors = std::make_unique<CsvWriter>((s.output / "monitors.csv").string(), columns, s.rank == 0);
 
