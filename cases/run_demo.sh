@@ -4,7 +4,7 @@ set -euo pipefail
 build=${1:?usage: run_demo.sh BUILD_DIR}
 here=$(cd "$(dirname "$0")" && pwd)
 case_dir="$here/fluidized_column"
-out="$here/../runs/fluidized_column"
+out="$(cd "$here/.." && pwd)/runs/fluidized_column"
 ranks=$(( $(nproc) >= 2 ? 2 : 1 ))
 echo "== running cases/fluidized_column on $ranks rank(s); output in runs/fluidized_column"
 mpirun -np "$ranks" "$build/bin/parcelflow" run "$case_dir" --output "$out"
