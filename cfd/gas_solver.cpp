@@ -117,16 +117,8 @@ void GasSolver::initialiseHydrostatic() {
   }
 }
 
-void GasSolver::copyOwned(const ScalarField& in, ScalarField& out, const char* what) const {
-  const int nOwned = mesh_->nOwnedCells();
-  if (static_cast<int>(in.size()) != nOwned && static_cast<int>(in.size()) != mesh_->nLocalCells())
-    throw ConfigError(std::string("GasSolver: ") + what + " has " + std::to_string(in.size()) +
-                      " entries; expected nOwnedCells or nLocalCells");
-  std::copy(in.begin(), in.begin() + nOwned, out.begin());
-  mesh_->exchange(out);
-}
-
-void GasSolver::copyOwned(const VectorField& in, VectorField& out, const char* what) const {
+template <class Field>
+void GasSolver::copyOwned(const Field& in, Field& out, const char* what) const {
   const int nOwned = mesh_->nOwnedCells();
   if (static_cast<int>(in.size()) != nOwned && static_cast<int>(in.size()) != mesh_->nLocalCells())
     throw ConfigError(std::string("GasSolver: ") + what + " has " + std::to_string(in.size()) +

@@ -72,8 +72,9 @@ class GasSolver {
   void setupBoundaries();
   void setupInletRegions();
   void initialiseHydrostatic();
-  void copyOwned(const ScalarField& in, ScalarField& out, const char* what) const;
-  void copyOwned(const VectorField& in, VectorField& out, const char* what) const;
+  // Owned entries of a scalar or vector field (owned- or local-size), then a halo exchange.
+  template <class Field>
+  void copyOwned(const Field& in, Field& out, const char* what) const;
 
   // gas_solver_momentum.cpp
   VectorField boundaryVelocity() const;

@@ -34,14 +34,13 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
     if (owners.ownerRank(c) == rank) ++n_owned_;
 }
 
-int ParcelMeshCoupler::nOwned() const { return n_owned_; }
 
 TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   for (long cell : touched_) slot_of_cell_[cell] = -1;
   touched_.clear();
   parcels_ = parcels;
   auto assignSlot = [this](int i, int j, int k) {
-    const long cell = i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k);
+    const long cell = backgroundCell(i, j, k);
     if (owners_.ownerRank(cell) < 0) return -1;
     int& slot = slot_of_cell_[cell];
     if (slot < 0) {
@@ -62,9 +61,7 @@ std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& o
 void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, int width,
                                         std::vector<double>& owned) const {
   std::vector<double> on_touched(touched_.size() * width, 0.0);
-  auto slot = [this](int i, int j, int k) {
-    return slot_of_cell_[i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k)];
-  };
+  auto slot = [this](int i, int j, int k) { return slot_of_cell_[backgroundCell(i, j, k)]; };
   depositParcels(kernel_, grid_, slot, parcels_.size, parcels_.x, width, per_parcel.data(), on_touched.data());
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
   exchange_.sumToOwners(touched_, on_touched, width, owned);
@@ -74,9 +71,7 @@ std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>
                                                        double orphan_value) const {
   const std::vector<double> on_touched = fetchTouched(owned, width);
   std::vector<double> at_parcels(parcels_.size * width);
-  auto slot = [this](int i, int j, int k) {
-    return slot_of_cell_[i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k)];
-  };
+  auto slot = [this](int i, int j, int k) { return slot_of_cell_[backgroundCell(i, j, k)]; };
   gatherToParcels(kernel_, grid_, slot, parcels_.size, parcels_.x, width, on_touched.data(), at_parcels.data(),
                   orphan_value);
   return at_parcels;

@@ -76,7 +76,9 @@ class ParcelMeshCoupler {
   std::vector<double> fetchTouched(const std::vector<double>& owned, int width) const;
   void depositToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned) const;
   std::vector<double> gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value) const;
-  int nOwned() const;
+  long backgroundCell(int i, int j, int k) const {
+    return i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k);
+  }
 
   BackgroundGrid grid_;
   const CellOwnerMap& owners_;

@@ -27,12 +27,7 @@ GasSettings columnSettings() {
   s.mesh.lengths = Vec3(0.03, 0.03, kL);
   s.mesh.cells = {3, 3, 60};
   s.gas = {kRho, kMu, Vec3(0, 0, -9.81)};
-  s.boundaries = {{"zmin", BoundaryType::VelocityInlet, Vec3(0, 0, kU), 0.0},
-                  {"zmax", BoundaryType::PressureOutlet, Vec3::Zero(), 1e5},
-                  {"xmin", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
-                  {"xmax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
-                  {"ymin", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
-                  {"ymax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0}};
+  s.boundaries = columnBoundaries(kU);
   tightSolvers(s);
   return s;
 }

@@ -111,6 +111,16 @@ inline int worldSize() {
 }
 
 // Tight linear-solver tolerances so runs on different rank counts agree to 1e-10.
+// A column fed from below at superficial velocity u, open at the top (p = 1e5), free-slip sides.
+inline std::vector<BoundarySettings> columnBoundaries(double u) {
+  return {{"zmin", BoundaryType::VelocityInlet, Vec3(0, 0, u), 0.0},
+          {"zmax", BoundaryType::PressureOutlet, Vec3::Zero(), 1e5},
+          {"xmin", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
+          {"xmax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
+          {"ymin", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
+          {"ymax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0}};
+}
+
 inline void tightSolvers(GasSettings& s) {
   s.solver.pressure.relTolerance = 1e-14;
   s.solver.pressure.maxIterations = 5000;

@@ -23,12 +23,7 @@ GasSettings bedSettings() {
   s.mesh.lengths = Vec3(0.04, 0.04, 0.2);
   s.mesh.cells = {4, 4, 40};
   s.gas = {kRho, kMu, Vec3(0, 0, -kG)};
-  s.boundaries = {{"zmin", BoundaryType::VelocityInlet, Vec3(0, 0, kU), 0.0},
-                  {"zmax", BoundaryType::PressureOutlet, Vec3::Zero(), 1e5},
-                  {"xmin", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
-                  {"xmax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
-                  {"ymin", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0},
-                  {"ymax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0}};
+  s.boundaries = columnBoundaries(kU);
   tightSolvers(s);
   return s;
 }
