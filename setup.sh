@@ -4,6 +4,7 @@
 #   ./setup.sh test    runs the test suite (unit + regression + validation smoke tests)
 #   ./setup.sh build   only installs and builds
 #   ./setup.sh bench   runs the benchmarks (not part of the tests; they print numbers)
+#   (long verification runs, not in `test`: cd build && ctest -L long)
 set -euo pipefail
 
 action=${1:-build}
@@ -15,7 +16,7 @@ build=${PARCELFLOW_BUILD_DIR:-$root/build}
 
 packages=(cmake g++ make pkg-config
           libliggghts-dev liggghts liggghts-doc libopenmpi-dev openmpi-bin
-          libeigen3-dev libhdf5-openmpi-dev libmetis-dev libyaml-cpp-dev libgtest-dev
+          libeigen3-dev libhdf5-openmpi-dev libmetis-dev libyaml-cpp-dev libgtest-dev libhypre-dev
           python3 python3-numpy python3-matplotlib python3-h5py python3-yaml)
 missing=()
 for p in "${packages[@]}"; do
@@ -40,7 +41,7 @@ cmake --build "$build" -j "$(nproc)"
 
 case "$action" in
   demo)  exec "$root/cases/run_demo.sh" "$build" ;;
-  test)  cd "$build" && exec ctest -LE benchmark --output-on-failure --timeout 1200 -j "$(nproc)" ;;
+  test)  cd "$build" && exec ctest -LE "benchmark|long" --output-on-failure --timeout 1200 -j "$(nproc)" ;;
   bench) cd "$build" && exec ctest -L benchmark --verbose ;;
   build) echo "== built: $build/bin/parcelflow" ;;
 esac

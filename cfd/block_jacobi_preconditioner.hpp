@@ -8,15 +8,16 @@
 
 #include "gas_settings.hpp"
 #include "ldu_matrix.hpp"
+#include "preconditioner.hpp"
 
 namespace parcelflow::cfd {
 
-class BlockJacobiPreconditioner {
+class BlockJacobiPreconditioner : public Preconditioner {
  public:
   BlockJacobiPreconditioner(const LduMatrix& matrix, const ScalarField& extraDiag,
                             PreconditionerType type);
   // z = M^-1 r on owned entries.
-  void apply(const ScalarField& r, ScalarField& z) const;
+  void apply(const ScalarField& r, ScalarField& z) const override;
 
  private:
   PreconditionerType type_;

@@ -1,5 +1,8 @@
 #include "gas_config.hpp"
 
+#include <utility>
+#include <vector>
+
 #include "config_error.hpp"
 #include "yaml_section.hpp"
 
@@ -130,15 +133,20 @@ LinearSolverSettings GasConfig::readLinearSolver(const YamlSection& s,
   l.relTolerance = s.number("tolerance", fallback.relTolerance, Range::closed(1e-16, 0.1));
   l.absTolerance = s.number("absolute_tolerance", fallback.absTolerance, Range::nonNegative());
   l.maxIterations = s.integer("max_iterations", fallback.maxIterations, 1, 100000);
-  const char* current = fallback.preconditioner == PreconditionerType::Jacobi ? "jacobi"
-                        : fallback.preconditioner == PreconditionerType::BlockCholesky
-                            ? "block_cholesky"
-                            : "block_ic";
-  const std::string p =
-      s.word("preconditioner", std::string(current), {"jacobi", "block_ic", "block_cholesky"});
-  l.preconditioner = p == "jacobi"           ? PreconditionerType::Jacobi
-                     : p == "block_cholesky" ? PreconditionerType::BlockCholesky
-                                             : PreconditionerType::BlockIncompleteCholesky;
+  static const std::vector<std::pair<std::string, PreconditionerType>> names = {
+      {"jacobi", PreconditionerType::Jacobi},
+      {"block_ic", PreconditionerType::BlockIncompleteCholesky},
+      {"block_cholesky", PreconditionerType::BlockCholesky},
+      {"boomeramg", PreconditionerType::BoomerAmg}};
+  std::string current;
+  std::vector<std::string> allowed;
+  for (const auto& [name, type] : names) {
+    allowed.push_back(name);
+    if (type == fallback.preconditioner) current = name;
+  }
+  const std::string p = s.word("preconditioner", current, allowed);
+  for (const auto& [name, type] : names)
+    if (name == p) l.preconditioner = type;
   return l;
 }
 

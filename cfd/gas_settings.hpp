@@ -46,7 +46,7 @@ struct InletRegionSettings {
 };
 
 enum class ConvectionScheme { Upwind, LimitedLinearUpwind };
-enum class PreconditionerType { Jacobi, BlockIncompleteCholesky, BlockCholesky };
+enum class PreconditionerType { Jacobi, BlockIncompleteCholesky, BlockCholesky, BoomerAmg };
 
 struct LinearSolverSettings {
   double relTolerance = 1e-8;   // on the residual norm relative to the right-hand side norm
@@ -58,7 +58,7 @@ struct LinearSolverSettings {
 struct SolverSettings {
   int pisoCorrectors = 2;
   ConvectionScheme convection = ConvectionScheme::LimitedLinearUpwind;
-  LinearSolverSettings pressure;
+  LinearSolverSettings pressure{1e-8, 1e-30, 1000, PreconditionerType::BoomerAmg};
   LinearSolverSettings momentum{1e-8, 1e-30, 1000, PreconditionerType::Jacobi};
 };
 

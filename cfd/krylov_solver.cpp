@@ -11,8 +11,7 @@ KrylovSolver::KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& 
     : matrix_(matrix),
       settings_(settings),
       extraDiag_(std::move(extraDiag)),
-      precond_(std::make_unique<BlockJacobiPreconditioner>(matrix_, extraDiag_,
-                                                           settings_.preconditioner)) {}
+      precond_(makePreconditioner(matrix_, extraDiag_, settings_.preconditioner)) {}
 
 double KrylovSolver::dot(const ScalarField& a, const ScalarField& b) const {
   double local = 0.0;
@@ -27,7 +26,7 @@ void KrylovSolver::residual(ScalarField& x, const ScalarField& b, ScalarField& r
 
 SolveStats KrylovSolver::pcg(ScalarField& x, const ScalarField& b) const {
   const int nLocal = matrix_.mesh().nLocalCells(), nOwned = matrix_.mesh().nOwnedCells();
-  const BlockJacobiPreconditioner& precond = *precond_;
+  const Preconditioner& precond = *precond_;
   ScalarField r(nLocal, 0.0), z(nLocal, 0.0), p(nLocal, 0.0), q(nLocal, 0.0);
   const double normB = std::sqrt(dot(b, b));
   const double scale = normB > 0.0 ? normB : 1.0;
@@ -60,7 +59,7 @@ SolveStats KrylovSolver::pcg(ScalarField& x, const ScalarField& b) const {
 
 SolveStats KrylovSolver::bicgstab(ScalarField& x, const ScalarField& b) const {
   const int nLocal = matrix_.mesh().nLocalCells(), nOwned = matrix_.mesh().nOwnedCells();
-  const BlockJacobiPreconditioner& precond = *precond_;
+  const Preconditioner& precond = *precond_;
   ScalarField r(nLocal, 0.0), r0(nLocal, 0.0), p(nLocal, 0.0), v(nLocal, 0.0), s(nLocal, 0.0),
       t(nLocal, 0.0), pHat(nLocal, 0.0), sHat(nLocal, 0.0);
   const double normB = std::sqrt(dot(b, b));

@@ -1,12 +1,13 @@
 #pragma once
-// Distributed Krylov methods over LduMatrix with a block-Jacobi preconditioner: PCG for the symmetric
-// pressure equation, BiCGStab for the momentum components. Converged when the residual 2-norm is below
-// max(relTolerance * |b|, absTolerance); a solve that hits maxIterations is reported, not hidden.
+// Distributed Krylov methods over LduMatrix with a block-Jacobi or BoomerAMG preconditioner: PCG for
+// the symmetric pressure equation, BiCGStab for the momentum components. Converged when the residual
+// 2-norm is below max(relTolerance * |b|, absTolerance); a solve that hits maxIterations is reported,
+// not hidden.
 #include <memory>
 
-#include "block_jacobi_preconditioner.hpp"
 #include "gas_settings.hpp"
 #include "ldu_matrix.hpp"
+#include "preconditioner.hpp"
 
 namespace parcelflow::cfd {
 
@@ -19,8 +20,8 @@ struct SolveStats {
 
 class KrylovSolver {
  public:
-  // Factorises the preconditioner once; solve as many right-hand sides as needed with it. The
-  // matrix must outlive the solver and keep its coefficients.
+  // Sets up the preconditioner once (collective); solve as many right-hand sides as needed with it.
+  // The matrix must outlive the solver and keep its coefficients.
   KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& settings,
                ScalarField extraDiag = {});
   // x: local field (initial guess on owned cells, ghosts refreshed on return); b: owned right side.
@@ -33,7 +34,7 @@ class KrylovSolver {
   const LduMatrix& matrix_;
   LinearSolverSettings settings_;
   ScalarField extraDiag_;
-  std::unique_ptr<BlockJacobiPreconditioner> precond_;
+  std::unique_ptr<Preconditioner> precond_;
 };
 
 }  // namespace parcelflow::cfd

@@ -40,6 +40,16 @@ add_library(parcelflow_metis INTERFACE)
 target_include_directories(parcelflow_metis SYSTEM INTERFACE ${METIS_INCLUDE_DIR})
 target_link_libraries(parcelflow_metis INTERFACE ${METIS_LIBRARY})
 
+# hypre (BoomerAMG, the pressure preconditioner): Debian ships no pkg-config file for it, so look for
+# the header and the library directly.
+find_path(HYPRE_INCLUDE_DIR HYPRE.h PATH_SUFFIXES hypre)
+find_library(HYPRE_LIBRARY HYPRE)
+parcelflow_require(HYPRE_INCLUDE_DIR "hypre (BoomerAMG)" "libhypre-dev")
+parcelflow_require(HYPRE_LIBRARY "hypre (BoomerAMG)" "libhypre-dev")
+add_library(parcelflow_hypre INTERFACE)
+target_include_directories(parcelflow_hypre SYSTEM INTERFACE ${HYPRE_INCLUDE_DIR})
+target_link_libraries(parcelflow_hypre INTERFACE ${HYPRE_LIBRARY} MPI::MPI_C)
+
 if(PARCELFLOW_WITH_LIGGGHTS)
   find_path(LIGGGHTS_INCLUDE_DIR lammps.h PATH_SUFFIXES liggghts)
   find_library(LIGGGHTS_LIBRARY liggghts)
