@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# The default case of `./setup.sh demo`: the fluidized test column, coupled, on 2 MPI ranks, then its plots.
+# The default case of `./setup.sh demo`: a short run of the Goldschmidt segregation bed (the paper's first
+# validation), coupled on 2 MPI ranks, then its plots. PARCELFLOW_DEMO_END sets the simulated seconds.
 set -euo pipefail
 build=${1:?usage: run_demo.sh BUILD_DIR}
 here=$(cd "$(dirname "$0")" && pwd)
-case_dir="$here/fluidized_column"
-out="$(cd "$here/.." && pwd)/runs/fluidized_column"
+case_dir="$here/goldschmidt_segregation"
+out="$(cd "$here/.." && pwd)/runs/goldschmidt_segregation"
+end=${PARCELFLOW_DEMO_END:-2.0}
 ranks=$(( $(nproc) >= 2 ? 2 : 1 ))
-echo "== running cases/fluidized_column on $ranks rank(s); output in runs/fluidized_column"
-mpirun -np "$ranks" "$build/bin/parcelflow" run "$case_dir" --output "$out"
+echo "== running cases/goldschmidt_segregation for $end s of simulated time on $ranks rank(s);" \
+     "output in runs/goldschmidt_segregation"
+mpirun -np "$ranks" "$build/bin/parcelflow" run "$case_dir" --output "$out" --end "$end"
 /usr/bin/python3 "$case_dir/plot.py" "$out"

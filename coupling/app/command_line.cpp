@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include <cmath>
+
 namespace parcelflow::coupling {
 
 namespace {
@@ -28,17 +30,36 @@ CommandLine parseDem(const std::vector<std::string>& args) {
   return cl;
 }
 
+double parseEndTime(const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value > 0.0) || !std::isfinite(value))
+    throw UsageError("option '--end' got '" + text + "'; allowed: a simulated end time in seconds, > 0");
+  return value;
+}
+
 CommandLine parseRun(const std::vector<std::string>& args) {
   CommandLine cl;
   cl.action = CommandLine::Action::run;
   if (args.size() < 2 || args[1].empty() || args[1][0] == '-')
-    throw UsageError("'parcelflow run' needs a case folder: parcelflow run CASE [--output DIR]");
+    throw UsageError("'parcelflow run' needs a case folder: parcelflow run CASE [--output DIR] [--end SECONDS]");
   cl.case_folder = args[1];
   for (std::size_t i = 2; i < args.size(); i += 2) {
-    if (args[i] != "--output")
-      throw UsageError("unknown option '" + args[i] + "' for 'parcelflow run'; allowed: --output DIR");
-    if (i + 1 >= args.size()) throw UsageError("option '--output' needs a folder: --output DIR");
-    cl.output_folder = args[i + 1];
+    const std::string& opt = args[i];
+    if (opt == "--output") {
+      if (i + 1 >= args.size()) throw UsageError("option '--output' needs a folder: --output DIR");
+      cl.output_folder = args[i + 1];
+    } else if (opt == "--end") {
+      if (i + 1 >= args.size()) throw UsageError("option '--end' needs a time: --end SECONDS");
+      cl.end_time = parseEndTime(args[i + 1]);
+    } else {
+      throw UsageError("unknown option '" + opt + "' for 'parcelflow run'; allowed: --output DIR, --end SECONDS");
+    }
   }
   return cl;
 }
@@ -64,13 +85,14 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
 }
 
 std::string usageText() {
-  return "usage: parcelflow run CASE [--output DIR]\n"
+  return "usage: parcelflow run CASE [--output DIR] [--end SECONDS]\n"
          "       parcelflow dem SCRIPT [-var NAME VALUE]... [-log FILE]\n"
          "       parcelflow --help | --version\n"
          "\n"
          "  run CASE     run the coupled CFD-DEM case in folder CASE (case.yaml + its LIGGGHTS script);\n"
          "               mpirun -np N parcelflow run CASE for N ranks. Output goes to DIR, by default\n"
          "               CASE/<output.folder of case.yaml>: monitors.csv, log.liggghts, fields.\n"
+         "               --end SECONDS replaces time.end of case.yaml (a shorter or longer run).\n"
          "  dem SCRIPT   run a LIGGGHTS input script in-process with parcelflow's parcel styles\n"
          "               registered (any number of MPI ranks: mpirun -np N parcelflow dem SCRIPT).\n"
          "               -var NAME VALUE defines a LIGGGHTS index variable, as for `liggghts -var`;\n"

@@ -33,7 +33,7 @@ int runCase(const pc::CommandLine& cl) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   try {
-    pc::CoupledRun run({cl.case_folder, cl.output_folder});
+    pc::CoupledRun run({cl.case_folder, cl.output_folder, cl.end_time});
     run.initialize();
     while (run.advance()) {
     }

@@ -112,6 +112,7 @@ void CoupledRun::initialize() {
   MPI_Comm_rank(MPI_COMM_WORLD, &s.rank);
   // Everything parcelflow reads is checked before any work starts.
   s.case_def = readCase(s.options.case_folder);
+  if (s.options.end_time > 0.0) s.case_def.settings.time.end = s.options.end_time;
   const CaseSettings& cs = s.case_def.settings;
   s.output = fs::absolute(s.options.output_folder.empty() ? fs::path(s.options.case_folder) / cs.output.folder
                                                           : fs::path(s.options.output_folder));
@@ -232,13 +233,14 @@ bool CoupledRun::advance() {
   if (s.time >= s.next_monitor - 1e-9 * dt) {
     s.next_monitor += cs.output.monitor_interval;
     std::vector<double> row = {s.time};
-    const std::vector<double> p = s.planes->means(s.gas->pressure());
+    const std::vector<double> p = s.planes->meansAtHeights(s.gas->pressure(), s.gas->pressureGradient());
     const std::size_t nplanes = cs.monitors.pressure_planes.size();
     if (cs.monitors.has_bed_pressure_drop) {
       // What the pressure drop carries on average in a fluidized bed: the buoyant weight of the parcels
-      // above the lower plane's layer centre, per area (the drop also holds the gas's own rho_g g dz).
+      // above the lower plane, per area (the drop also holds the gas's own rho_g g dz).
       const double g = std::abs(s.case_def.gas.gas.gravity[2]);
-      const double weight = s.parcels->buoyantWeightAbove(s.planes->layerCentre(nplanes), s.case_def.gas.gas.density, g);
+      const double weight =
+          s.parcels->buoyantWeightAbove(cs.monitors.bed_pressure_drop[0], s.case_def.gas.gas.density, g);
       row.insert(row.end(), {p[nplanes] - p[nplanes + 1], weight / s.planes->layerArea(nplanes)});
     }
     row.insert(row.end(), p.begin(), p.begin() + nplanes);

@@ -21,6 +21,7 @@ namespace parcelflow::coupling {
 struct RunOptions {
   std::string case_folder;
   std::string output_folder;  // default: CASE/output
+  double end_time = 0.0;      // > 0 replaces time.end of case.yaml
 };
 
 class CoupledRun {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 
-#include "particle_mesh_transfer.hpp"
 
 namespace parcelflow::coupling {
 
@@ -49,7 +48,7 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
     }
     return slot;
   };
-  return forEachParcelStencil(kernel_, grid_, assignSlot, parcels.size, parcels.x, [](std::size_t, const Stencil&) {});
+  return buildStencils(kernel_, grid_, assignSlot, parcels.size, parcels.x, stencils_);
 }
 
 std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& owned, int width) const {
@@ -61,8 +60,7 @@ std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& o
 void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, int width,
                                         std::vector<double>& owned) const {
   std::vector<double> on_touched(touched_.size() * width, 0.0);
-  auto slot = [this](int i, int j, int k) { return slot_of_cell_[backgroundCell(i, j, k)]; };
-  depositParcels(kernel_, grid_, slot, parcels_.size, parcels_.x, width, per_parcel.data(), on_touched.data());
+  deposit(stencils_, width, per_parcel.data(), on_touched.data());
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
   exchange_.sumToOwners(touched_, on_touched, width, owned);
 }
@@ -71,9 +69,7 @@ std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>
                                                        double orphan_value) const {
   const std::vector<double> on_touched = fetchTouched(owned, width);
   std::vector<double> at_parcels(parcels_.size * width);
-  auto slot = [this](int i, int j, int k) { return slot_of_cell_[backgroundCell(i, j, k)]; };
-  gatherToParcels(kernel_, grid_, slot, parcels_.size, parcels_.x, width, on_touched.data(), at_parcels.data(),
-                  orphan_value);
+  gather(stencils_, width, on_touched.data(), at_parcels.data(), orphan_value);
   return at_parcels;
 }
 

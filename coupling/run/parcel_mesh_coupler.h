@@ -7,6 +7,8 @@
 // owner anywhere), so deposited volume and momentum are conserved exactly, at walls and across ranks.
 //
 // One step: beginStep(parcels) -> depositSolids -> computeDrag -> (gas advances) -> gatherGas.
+// beginStep computes every parcel's stencil once (weights and touched slots); all transfers of the
+// step reuse it, so the weights are the same both ways.
 #pragma once
 
 #include <vector>
@@ -15,6 +17,7 @@
 #include "cell_exchange.h"
 #include "parcel_drag.hpp"
 #include "stencil.hpp"
+#include "stencil_set.hpp"
 #include "transfer_kernel.hpp"
 
 namespace parcelflow::coupling {
@@ -93,6 +96,7 @@ class ParcelMeshCoupler {
   ParcelBatch parcels_;
   std::vector<int> slot_of_cell_;   // background cell -> touched slot, -1 when untouched this step
   std::vector<long> touched_;       // touched slot -> background cell
+  StencilSet stencils_;             // this step's stencils, cells as touched slots
 };
 
 }  // namespace parcelflow::coupling

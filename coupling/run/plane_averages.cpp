@@ -22,18 +22,25 @@ PlaneAverages::PlaneAverages(const cfd::Mesh& mesh, const std::vector<double>& h
                              " m has no fluid cell (the mesh spans z from " + std::to_string(bg.origin()[2]) + " to " +
                              std::to_string(bg.origin()[2] + bg.n()[2] * bg.spacing()[2]) + " m)");
     layer_of_plane_.push_back(layer);
+    height_.push_back(z);
     layer_centre_.push_back(bg.origin()[2] + (layer + 0.5) * bg.spacing()[2]);
     layer_area_.push_back(volume / bg.spacing()[2]);
   }
 }
 
 std::vector<double> PlaneAverages::means(const cfd::ScalarField& field) const {
+  return meansAtHeights(field, {});
+}
+
+std::vector<double> PlaneAverages::meansAtHeights(const cfd::ScalarField& field,
+                                                  const cfd::VectorField& gradient) const {
   const std::size_t n = layer_of_plane_.size();
   std::vector<double> local(2 * n, 0.0), global(2 * n);
   for (int c = 0; c < mesh_.nOwnedCells(); ++c)
     for (std::size_t k = 0; k < n; ++k)
       if (layer_of_cell_[c] == layer_of_plane_[k]) {
-        local[2 * k] += field[c] * mesh_.cellVolume(c);
+        const double shift = gradient.empty() ? 0.0 : gradient[c][2] * (height_[k] - layer_centre_[k]);
+        local[2 * k] += (field[c] + shift) * mesh_.cellVolume(c);
         local[2 * k + 1] += mesh_.cellVolume(c);
       }
   MPI_Allreduce(local.data(), global.data(), static_cast<int>(2 * n), MPI_DOUBLE, MPI_SUM, mesh_.comm());

@@ -29,8 +29,9 @@ CASES = os.path.join(HERE, "..", "..", "..", "cases")
 RHO_P, RHO_G, MU, G = 2500.0, 1.2, 1.8e-5, 9.81
 
 
-def run_case(parcelflow, launcher, source, edit):
-    """Copies case folder `source`, applies edit(case_yaml_dict), runs it, returns the output folder."""
+def run_case(parcelflow, launcher, source, edit, prepare=lambda case: None):
+    """Copies case folder `source`, applies edit(case_yaml_dict) and prepare(case_folder), runs it,
+    returns the output folder."""
     work = tempfile.mkdtemp(prefix="pf_verify_")
     case = os.path.join(work, "case")
     shutil.copytree(source, case, ignore=shutil.ignore_patterns("output"))
@@ -38,6 +39,7 @@ def run_case(parcelflow, launcher, source, edit):
     settings = yaml.safe_load(open(path))
     edit(settings)
     yaml.safe_dump(settings, open(path, "w"))
+    prepare(case)
     out = os.path.join(work, "output")
     done = subprocess.run(launcher + [parcelflow, "run", case, "--output", out], capture_output=True, text=True,
                           errors="replace")

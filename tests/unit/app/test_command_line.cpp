@@ -37,6 +37,18 @@ TEST(CommandLine, RunWithOutputFolder) {
   EXPECT_NE(usageErrorOf({"run", "c", "-np", "2"}).find("unknown option '-np'"), std::string::npos);
 }
 
+TEST(CommandLine, RunWithEndTime) {
+  const auto cl = pc::parseCommandLine({"run", "cases/bed", "--end", "2.5", "--output", "o"});
+  EXPECT_DOUBLE_EQ(cl.end_time, 2.5);
+  EXPECT_EQ(cl.output_folder, "o");
+  EXPECT_DOUBLE_EQ(pc::parseCommandLine({"run", "cases/bed"}).end_time, 0.0);
+  for (const char* bad : {"0", "-1", "2s", "nan", "inf", ""})
+    EXPECT_NE(usageErrorOf({"run", "c", "--end", bad}).find("option '--end' got '" + std::string(bad) + "'"),
+              std::string::npos)
+        << bad;
+  EXPECT_NE(usageErrorOf({"run", "c", "--end"}).find("--end SECONDS"), std::string::npos);
+}
+
 TEST(CommandLine, HelpAndVersion) {
   EXPECT_EQ(pc::parseCommandLine({"--help"}).action, pc::CommandLine::Action::help);
   EXPECT_EQ(pc::parseCommandLine({"--version"}).action, pc::CommandLine::Action::version);

@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""Plots of a goldschmidt_segregation run: the mean height of each size class against time (the measure
+Goldschmidt used), the bed pressure drop against the bed weight, and solids-fraction snapshots from the
+HDF5 fields. Prints the segregation summary over the last half of the run (or the last 10 s if longer).
+Usage: plot.py [OUTPUT_FOLDER] (default: output next to this file)."""
+import csv
+import glob
+import os
+import sys
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+folder = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "output")
+rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
+t = np.array([float(r["time"]) for r in rows])
+small = np.array([float(r["mean_z_type1"]) for r in rows])
+large = np.array([float(r["mean_z_type2"]) for r in rows])
+dp = np.array([float(r["bed_pressure_drop"]) for r in rows])
+weight = np.array([float(r["bed_weight_per_area"]) for r in rows])
+
+fig, (a, b) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+a.plot(t, 1000 * small, lw=0.8, label="1.5 mm beads")
+a.plot(t, 1000 * large, lw=0.8, label="2.5 mm beads")
+a.set_ylabel("mean height of the class [mm]")
+a.legend(fontsize=8)
+b.plot(t, dp, lw=0.6, label="pressure drop plate - 0.4 m")
+b.plot(t, weight, lw=1.2, label="buoyant bed weight / area")
+b.set_ylabel("Pa")
+b.set_xlabel("time [s]")
+b.legend(fontsize=8)
+fig.suptitle("goldschmidt_segregation: 1.5 / 2.5 mm glass, 50/50 by mass, U = 1.1 m/s")
+fig.tight_layout()
+heights_png = os.path.join(folder, "goldschmidt_heights.png")
+fig.savefig(heights_png, dpi=120)
+
+# Solids fraction on the mid plane (the middle of the 5 cells across the depth) at up to six times.
+snapshots = sorted(glob.glob(os.path.join(folder, "fields_[0-9]*.h5")))
+picked = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1, min(6, len(snapshots)))] if snapshots else []
+if picked:
+    with h5py.File(os.path.join(folder, "fields_mesh.h5"), "r") as f:
+        centre = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)  # output order
+    spacing = [np.diff(np.unique(np.round(centre[:, d], 9)))[0] for d in range(3)]
+    index = [np.rint((centre[:, d] - centre[:, d].min()) / spacing[d]).astype(int) for d in range(3)]
+    shape = [i.max() + 1 for i in index]
+    mid = index[1] == shape[1] // 2
+    fig, axes = plt.subplots(1, len(picked), figsize=(2.0 * len(picked), 6), squeeze=False)
+    for ax, path in zip(axes[0], picked):
+        with h5py.File(path, "r") as f:
+            solids_out = 1.0 - np.asarray(f["gas_fraction"])
+            time = float(np.asarray(f["time"])[0])
+        plane = np.full((shape[2], shape[0]), np.nan)
+        plane[index[2][mid], index[0][mid]] = solids_out[mid]
+        top = centre[:, 2].max() + 0.5 * spacing[2]
+        ax.imshow(plane, origin="lower", extent=[0, shape[0] * spacing[0], 0, top], vmin=0, vmax=0.65,
+                  cmap="viridis", aspect="auto")
+        ax.set_ylim(0, 0.5 * top)
+        ax.set_title(f"t = {time:.2f} s", fontsize=8)
+        ax.set_xticks([])
+    axes[0][0].set_ylabel("z [m]")
+    fig.suptitle("solids fraction on the mid plane (0 to 0.65)")
+    fig.tight_layout()
+    snapshots_png = os.path.join(folder, "goldschmidt_solids_fraction.png")
+    fig.savefig(snapshots_png, dpi=120)
+    print(f"plot written: {snapshots_png}")
+
+window = t >= max(t[-1] - 10.0, t[-1] / 2)
+h_small, h_large = small[window].mean(), large[window].mean()
+h_mean = 0.5 * (h_small + h_large)
+print(f"over {t[window][0]:.2f}-{t[-1]:.2f} s: mean height small {1000 * h_small:.2f} mm (rms {1000 * small[window].std():.2f}), "
+      f"large {1000 * h_large:.2f} mm (rms {1000 * large[window].std():.2f}); segregation "
+      f"(h_small - h_large)/h_mean = {(h_small - h_large) / h_mean:+.3f}; dp/(W/A) = "
+      f"{dp[window].mean() / weight[window].mean():.3f}")
+print(f"plot written: {heights_png}")
