@@ -28,21 +28,4 @@ void gather(const StencilSet& set, int ncomp, const double* cellQ, double* parce
   }
 }
 
-void depositCouplingSources(const StencilSet& set, const double* volume, const double* kappa,
-                            const double* v, double* cellVolume, double* cellKappa, double* cellKappaV) {
-  for (std::size_t p = 0; p < set.parcels(); ++p) {
-    const double vol = volume[p], k = kappa[p];
-    const double kv[3] = {k * v[3 * p], k * v[3 * p + 1], k * v[3 * p + 2]};
-    for (std::size_t e = set.offset[p]; e < set.offset[p + 1]; ++e) {
-      const std::size_t c = static_cast<std::size_t>(set.cell[e]);
-      const double w = set.weight[e];
-      cellVolume[c] += w * vol;
-      cellKappa[c] += w * k;
-      cellKappaV[3 * c] += w * kv[0];
-      cellKappaV[3 * c + 1] += w * kv[1];
-      cellKappaV[3 * c + 2] += w * kv[2];
-    }
-  }
-}
-
 }  // namespace parcelflow::coupling

@@ -49,9 +49,4 @@ void deposit(const StencilSet& set, int ncomp, const double* q, double* cellQ);
 void gather(const StencilSet& set, int ncomp, const double* cellQ, double* parcelQ,
             double orphanValue = std::numeric_limits<double>::quiet_NaN());
 
-// The coupling sources of DESIGN.md section 4 in one pass: particle volume np V_p, kappa and kappa v
-// (v interleaved xyz). Adds into cellVolume[c], cellKappa[c], cellKappaV[3c + d].
-void depositCouplingSources(const StencilSet& set, const double* volume, const double* kappa,
-                            const double* v, double* cellVolume, double* cellKappa, double* cellKappaV);
-
 }  // namespace parcelflow::coupling

@@ -9,21 +9,11 @@ pure time: LIGGGHTS' 'Loop time' of the final run. Prints both, their ratio and 
 import argparse
 import os
 import re
-import shutil
-import subprocess
 import sys
 import tempfile
 
-import yaml
-
-CASE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases", "fluidized_column")
-
-
-def run(command, cwd):
-    done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, errors="replace")
-    if done.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(command)}\n{done.stdout[-3000:]}{done.stderr[-2000:]}")
-    return done.stdout
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, copy_case, run  # noqa: E402
 
 
 def main():
@@ -35,11 +25,13 @@ def main():
     args = parser.parse_args()
     launch = args.mpiexec + ["-np", str(args.ranks)]
     with tempfile.TemporaryDirectory() as tmp:
-        case = os.path.join(tmp, "case")
-        shutil.copytree(CASE, case, ignore=shutil.ignore_patterns("output"))
-        settings = yaml.safe_load(open(os.path.join(case, "case.yaml")))
-        settings["time"]["end"] = args.time
-        yaml.safe_dump(settings, open(os.path.join(case, "case.yaml"), "w"))
+        settings = {}
+
+        def edit(case_settings):
+            case_settings["time"]["end"] = args.time
+            settings.update(case_settings)
+
+        case = copy_case(os.path.join(CASES, "fluidized_column"), tmp, edit)
         coupled = run(launch + [args.parcelflow, "run", case, "--output", os.path.join(tmp, "out")], tmp)
         wall = float(re.search(r"simulated in ([0-9.]+) s wall", coupled).group(1))
         split = [l for l in coupled.splitlines() if l.startswith("t = ")][-1]

@@ -10,19 +10,16 @@ import argparse
 import os
 import re
 import statistics
-import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import run  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
 
 
-def run(command, cwd):
-    done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, errors="replace")
-    if done.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(command)}\n{done.stdout[-3000:]}{done.stderr[-2000:]}")
-    return done.stdout
 
 
 def throughput(output):

@@ -17,7 +17,9 @@ import math
 import os
 import sys
 
-from verify_coupled import CASES, MU, RHO_G, RHO_P, G, run_case
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, run_case  # noqa: E402
+from verify_coupled import MU, RHO_G, RHO_P, G  # noqa: E402
 
 BEAD = 1.0e-3
 COLUMN = os.path.join(CASES, "fluidized_column")

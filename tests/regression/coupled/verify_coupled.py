@@ -16,38 +16,15 @@ usage: verify_coupled.py PARCELFLOW MPIEXEC... -- CHECK [ARG]
 import csv
 import math
 import os
-import shutil
-import subprocess
 import sys
-import tempfile
 
 import h5py
-import yaml
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, run_case  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CASES = os.path.join(HERE, "..", "..", "..", "cases")
 RHO_P, RHO_G, MU, G = 2500.0, 1.2, 1.8e-5, 9.81
-
-
-def run_case(parcelflow, launcher, source, edit, prepare=lambda case: None):
-    """Copies case folder `source`, applies edit(case_yaml_dict) and prepare(case_folder), runs it,
-    returns the output folder."""
-    work = tempfile.mkdtemp(prefix="pf_verify_")
-    case = os.path.join(work, "case")
-    shutil.copytree(source, case, ignore=shutil.ignore_patterns("output"))
-    path = os.path.join(case, "case.yaml")
-    settings = yaml.safe_load(open(path))
-    edit(settings)
-    yaml.safe_dump(settings, open(path, "w"))
-    prepare(case)
-    out = os.path.join(work, "output")
-    done = subprocess.run(launcher + [parcelflow, "run", case, "--output", out], capture_output=True, text=True,
-                          errors="replace")
-    if done.returncode != 0:
-        sys.exit(f"FAIL: parcelflow exited with {done.returncode}\n{done.stdout[-3000:]}{done.stderr[-2000:]}")
-    summary = [l for l in done.stdout.splitlines() if l.startswith("parcelflow: done")]
-    print(summary[-1] if summary else "(no summary line)")
-    return out
 
 
 def wen_yu_terminal_velocity(dp):

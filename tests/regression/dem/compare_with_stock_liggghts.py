@@ -8,10 +8,11 @@ row of every thermo table exactly (same library, same decomposition: the numbers
 import argparse
 import os
 import re
-import shutil
-import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import run  # noqa: E402
 
 TUTORIALS = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
 # tutorial, script, {original run line: shortened run line}
@@ -48,12 +49,6 @@ def thermo_rows(output):
     return rows
 
 
-def run(command, folder):
-    done = subprocess.run(command, cwd=folder, capture_output=True, text=True, errors="replace",
-                          timeout=600)
-    if done.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(command)} exited with {done.returncode}\n{done.stdout[-3000:]}{done.stderr[-3000:]}")
-    return done.stdout
 
 
 def main():
@@ -75,7 +70,7 @@ def main():
                 os.makedirs(os.path.join(folder, "post"))
                 with open(os.path.join(folder, script), "w") as f:
                     f.write(text)
-                outputs[name] = thermo_rows(run(launcher + program, folder))
+                outputs[name] = thermo_rows(run(launcher + program, folder, timeout=600))
             stock, ours = outputs["stock"], outputs["parcelflow"]
             same = stock == ours and len(stock) > 2
             print(f"{tutorial}/{script} on {args.ranks} rank(s): {len(stock)} thermo rows from liggghts, "

@@ -26,8 +26,8 @@ import xml.etree.ElementTree as ElementTree
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "regression", "coupled"))
-from verify_coupled import CASES, run_case  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, run_case  # noqa: E402
 
 CELLS = 16 * 5 * 94
 GAS_STEP, DEM_STEP, MONITOR_INTERVAL, END, G = 5e-4, 5e-4 / 12, 0.0025, 0.1, 9.81

@@ -1,0 +1,44 @@
+"""What the Python test drivers share: running a program (a failure ends the test with its output) and
+running a copy of a case folder with edited settings. Drivers import it after putting tests/support on
+sys.path (see any driver's imports)."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import yaml
+
+CASES = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "cases"))
+
+
+def run(command, cwd=None, timeout=None):
+    """Runs command; returns its standard output, or ends the test with FAIL and the output's tail."""
+    done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, errors="replace", timeout=timeout)
+    if done.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(command)} exited with {done.returncode}\n"
+                 f"{done.stdout[-3000:]}{done.stderr[-3000:]}")
+    return done.stdout
+
+
+def copy_case(source, work, edit, prepare=lambda case: None):
+    """Copies case folder `source` into work/case, applies edit(case_yaml_dict) and prepare(case_folder)."""
+    case = os.path.join(work, "case")
+    shutil.copytree(source, case, ignore=shutil.ignore_patterns("output"))
+    path = os.path.join(case, "case.yaml")
+    settings = yaml.safe_load(open(path))
+    edit(settings)
+    yaml.safe_dump(settings, open(path, "w"))
+    prepare(case)
+    return case
+
+
+def run_case(parcelflow, launcher, source, edit, prepare=lambda case: None):
+    """Runs an edited copy of case folder `source` in a new temporary folder; returns the output folder."""
+    work = tempfile.mkdtemp(prefix="pf_verify_")
+    case = copy_case(source, work, edit, prepare)
+    out = os.path.join(work, "output")
+    stdout = run(launcher + [parcelflow, "run", case, "--output", out])
+    summary = [l for l in stdout.splitlines() if l.startswith("parcelflow: done")]
+    print(summary[-1] if summary else "(no summary line)")
+    return out
