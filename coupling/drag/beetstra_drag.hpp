@@ -25,6 +25,7 @@ namespace parcelflow::coupling {
 class BeetstraDrag {
  public:
   static constexpr const char* typeName = "BeetstraVanDerHoefKuipers";
+  static constexpr bool usesMeanDiameter = true;  // reads DragInput::dMean: the coupler supplies it
   static const char* reference();
 
   // Monodisperse normalised drag F(phi, Re) (see header comment).

@@ -11,6 +11,7 @@
 // (forEachParcel in parcel_drag.hpp, or visitDragLaw with a generic lambda).
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -26,6 +27,17 @@ namespace parcelflow::coupling {
 
 using DragLaw = std::variant<WenYuDrag, GidaspowDrag, GidaspowBlendDrag, ErgunDrag, DiFeliceDrag,
                              BeetstraDrag>;
+
+// Whether a law reads DragInput::dMean (the local Sauter mean): such a law declares
+// `static constexpr bool usesMeanDiameter = true`; the others need not mention it.
+template <class Law, class = void>
+struct UsesMeanDiameter : std::false_type {};
+template <class Law>
+struct UsesMeanDiameter<Law, std::void_t<decltype(Law::usesMeanDiameter)>> : std::bool_constant<Law::usesMeanDiameter> {};
+
+inline bool usesMeanDiameter(const DragLaw& law) {
+  return std::visit([](const auto& l) { return UsesMeanDiameter<std::decay_t<decltype(l)>>::value; }, law);
+}
 
 // Registered names, in registry order.
 std::vector<std::string> dragLawNames();

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "cfd/internal_error.hpp"
+
 
 namespace parcelflow::coupling {
 
@@ -24,6 +26,7 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
       limits_(limits),
       gas_(gas),
       cell_volume_(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]),
+      uses_mean_diameter_(usesMeanDiameter(drag_)),
       slot_of_cell_(owners.backgroundSize(), -1) {
   grid_.validate();
   int rank = 0;
@@ -74,31 +77,46 @@ std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>
 }
 
 void ParcelMeshCoupler::depositSolids(std::vector<double>& owned_solid_fraction) {
-  std::vector<double> volume(parcels_.size);
-  for (std::size_t p = 0; p < parcels_.size; ++p)
-    volume[p] = parcels_.np[p] * kPi / 6.0 * std::pow(parcels_.dp[p], 3);
-  depositToOwners(volume, 1, owned_solid_fraction);
-  for (double& a : owned_solid_fraction) a /= cell_volume_;
+  const int width = uses_mean_diameter_ ? 2 : 1;
+  std::vector<double> moments(parcels_.size * width);
+  for (std::size_t p = 0; p < parcels_.size; ++p) {
+    const double d = parcels_.dp[p];
+    moments[width * p] = parcels_.np[p] * kPi / 6.0 * d * d * d;
+    if (uses_mean_diameter_) moments[width * p + 1] = parcels_.np[p] * d * d;
+  }
+  depositToOwners(moments, width, owned_moments_);
+  owned_solid_fraction.resize(n_owned_);
+  for (int c = 0; c < n_owned_; ++c) owned_solid_fraction[c] = owned_moments_[width * c] / cell_volume_;
 }
 
 DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fraction,
                                          const std::vector<double>& owned_velocity, SolidsOnCells& solids,
                                          GasAtParcels& at_parcels) {
   const std::size_t n = parcels_.size;
-  std::vector<double> owned(static_cast<std::size_t>(n_owned_) * 4);
+  // a_g, u and, for BVK, the two moments of depositSolids.
+  const int width = uses_mean_diameter_ ? 6 : 4;
+  PARCELFLOW_CFD_ASSERT(!uses_mean_diameter_ || owned_moments_.size() == 2 * static_cast<std::size_t>(n_owned_),
+                        "computeDrag needs this step's depositSolids for the Sauter mean");
+  std::vector<double> owned(static_cast<std::size_t>(n_owned_) * width);
   for (int c = 0; c < n_owned_; ++c) {
-    owned[4 * c] = owned_gas_fraction[c];
-    for (int d = 0; d < 3; ++d) owned[4 * c + 1 + d] = owned_velocity[3 * c + d];
+    owned[width * c] = owned_gas_fraction[c];
+    for (int d = 0; d < 3; ++d) owned[width * c + 1 + d] = owned_velocity[3 * c + d];
+    if (uses_mean_diameter_)
+      for (int m = 0; m < 2; ++m) owned[width * c + 4 + m] = owned_moments_[2 * c + m];
   }
   // Orphans get NaN: the drag law counts them as invalid input and gives them kappa = 0.
-  const std::vector<double> gas = gatherFromOwned(owned, 4, std::numeric_limits<double>::quiet_NaN());
+  const std::vector<double> gas = gatherFromOwned(owned, width, std::numeric_limits<double>::quiet_NaN());
   at_parcels.gas_fraction.resize(n);
+  at_parcels.mean_diameter.resize(uses_mean_diameter_ ? n : 0);
   std::vector<double> slip(n);
   for (std::size_t p = 0; p < n; ++p) {
-    at_parcels.gas_fraction[p] = gas[4 * p];
+    const double* g = gas.data() + width * p;
+    at_parcels.gas_fraction[p] = g[0];
     double s2 = 0.0;
-    for (int d = 0; d < 3; ++d) s2 += std::pow(gas[4 * p + 1 + d] - parcels_.v[3 * p + d], 2);
+    for (int d = 0; d < 3; ++d) s2 += std::pow(g[1 + d] - parcels_.v[3 * p + d], 2);
     slip[p] = std::sqrt(s2);
+    // <d> = sum np dp^3 / sum np dp^2 = (6/pi) sum np V_p / sum np dp^2 (NaN for orphans: invalid input)
+    if (uses_mean_diameter_) at_parcels.mean_diameter[p] = 6.0 / kPi * g[4] / g[5];
   }
   ParcelDragBatch batch;
   batch.size = n;
@@ -106,6 +124,7 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
   batch.slip = slip.data();
   batch.dp = parcels_.dp;
   batch.np = parcels_.np;
+  batch.dMean = uses_mean_diameter_ ? at_parcels.mean_diameter.data() : nullptr;
   batch.rhoG = gas_.density;
   batch.muG = gas_.viscosity;
   at_parcels.kappa.assign(n, 0.0);

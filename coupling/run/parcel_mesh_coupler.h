@@ -49,6 +49,7 @@ struct GasAtParcels {
   std::vector<double> gas_velocity;
   std::vector<double> grad_p;
   std::vector<double> gas_fraction;
+  std::vector<double> mean_diameter;  // local Sauter mean <d> (only for a law that uses it, else empty)
 };
 
 class ParcelMeshCoupler {
@@ -59,11 +60,14 @@ class ParcelMeshCoupler {
   // Finds the touched cells of this rank's parcels. Call once per coupling step, after the DEM moved.
   TransferStats beginStep(const ParcelBatch& parcels);
 
-  // a_s on owned cells from the parcels' volumes np V_p.
+  // a_s on owned cells from the parcels' volumes np V_p (and, for a drag law that uses the local Sauter
+  // mean, the moment np dp^2 as well).
   void depositSolids(std::vector<double>& owned_solid_fraction);
 
   // Gathers a_g and u (owned cell fields, u interleaved xyz) at the parcels, evaluates the drag law
-  // (real diameter dp, local a_g, slip) into kappa, and deposits kappa and kappa v to the owned cells.
+  // (real diameter dp, local a_g, slip; for BVK the local Sauter mean <d> = sum np dp^3 / sum np dp^2,
+  // both moments deposited by depositSolids and gathered with the same weights) into kappa, and deposits
+  // kappa and kappa v to the owned cells.
   DragStats computeDrag(const std::vector<double>& owned_gas_fraction, const std::vector<double>& owned_velocity,
                         SolidsOnCells& solids, GasAtParcels& at_parcels);
 
@@ -92,6 +96,8 @@ class ParcelMeshCoupler {
   GasProperties gas_;
   double cell_volume_;
   int n_owned_;
+  bool uses_mean_diameter_;           // the drag law reads the local Sauter mean
+  std::vector<double> owned_moments_;  // per owned cell: sum w np V_p, sum w np dp^2 (if used)
 
   ParcelBatch parcels_;
   std::vector<int> slot_of_cell_;   // background cell -> touched slot, -1 when untouched this step
