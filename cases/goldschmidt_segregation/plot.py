@@ -71,8 +71,18 @@ if picked:
 window = t >= max(t[-1] - 10.0, t[-1] / 2)
 h_small, h_large = small[window].mean(), large[window].mean()
 h_mean = 0.5 * (h_small + h_large)
-print(f"over {t[window][0]:.2f}-{t[-1]:.2f} s: mean height small {1000 * h_small:.2f} mm (rms {1000 * small[window].std():.2f}), "
-      f"large {1000 * h_large:.2f} mm (rms {1000 * large[window].std():.2f}); segregation "
-      f"(h_small - h_large)/h_mean = {(h_small - h_large) / h_mean:+.3f}; dp/(W/A) = "
+
+
+def rms_mm(h):
+    """Fluctuation of a class's mean height over the window: rms about its mean and about its linear trend
+    (the second excludes a segregation still drifting) [mm]."""
+    about_trend = h[window] - np.polyval(np.polyfit(t[window], h[window], 1), t[window])
+    return 1000 * h[window].std(), 1000 * about_trend.std()
+
+
+print(f"over {t[window][0]:.2f}-{t[-1]:.2f} s: mean height small {1000 * h_small:.2f} mm, large {1000 * h_large:.2f} mm; "
+      f"segregation (h_small - h_large)/h_mean = {(h_small - h_large) / h_mean:+.3f}; dp/(W/A) = "
       f"{dp[window].mean() / weight[window].mean():.3f}")
+for name, h in (("small", small), ("large", large)):
+    print("rms of the %s class's mean height: %.2f mm about its mean, %.2f mm about its linear trend" % ((name,) + rms_mm(h)))
 print(f"plot written: {heights_png}")
