@@ -30,3 +30,16 @@ function(parcelflow_add_gtest name)
                          PROCESSORS ${n})
   endforeach()
 endfunction()
+
+# parcelflow_add_python_benchmark(NAME SCRIPT [extra script arguments...])
+# A Python benchmark, run alone on 1 and then 2 ranks (NAME_np1, NAME_np2; label benchmark). The script
+# gets --parcelflow BIN, the extra arguments, --ranks N and last --mpiexec MPIEXEC FLAGS...
+function(parcelflow_add_python_benchmark name script)
+  foreach(ranks 1 2)
+    add_test(NAME ${name}_np${ranks}
+             COMMAND ${PARCELFLOW_PYTHON} ${script} --parcelflow $<TARGET_FILE:parcelflow> ${ARGN} --ranks ${ranks}
+                     --mpiexec ${MPIEXEC_EXECUTABLE} ${PARCELFLOW_MPIEXEC_FLAGS})
+    set_tests_properties(${name}_np${ranks} PROPERTIES LABELS benchmark TIMEOUT 3600 PROCESSORS ${ranks}
+                         RUN_SERIAL TRUE)
+  endforeach()
+endfunction()
