@@ -7,7 +7,6 @@
 
 #include "cfd/internal_error.hpp"
 
-
 namespace parcelflow::coupling {
 
 namespace {

@@ -2,6 +2,7 @@
 running a copy of a case folder with edited settings. Drivers import it after putting tests/support on
 sys.path (see any driver's imports)."""
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -19,6 +20,19 @@ def run(command, cwd=None, timeout=None):
         sys.exit(f"FAIL: {' '.join(command)} exited with {done.returncode}\n"
                  f"{done.stdout[-3000:]}{done.stderr[-3000:]}")
     return done.stdout
+
+
+def fail(message):
+    """Ends the test with FAIL and the message."""
+    sys.exit("FAIL: " + message)
+
+
+def loop_timing(stdout):
+    """The coupled loop's wall time [s] from parcelflow's summary line (LIGGGHTS set-up excluded) and the
+    last progress line's split of it ('DEM .. % | coupling .. % | gas .. % | output .. %')."""
+    wall = float(re.search(r"simulated in ([0-9.]+) s wall", stdout).group(1))
+    progress = [line for line in stdout.splitlines() if line.startswith("t = ")][-1]
+    return wall, progress.split("parcel-steps/s")[-1].strip()
 
 
 def copy_case(source, work, edit, prepare=lambda case: None):

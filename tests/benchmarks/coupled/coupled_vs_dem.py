@@ -13,7 +13,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, copy_case, run  # noqa: E402
+from parcelflow_runs import CASES, copy_case, loop_timing, run  # noqa: E402
 
 
 def main():
@@ -33,8 +33,7 @@ def main():
 
         case = copy_case(os.path.join(CASES, "fluidized_column"), tmp, edit)
         coupled = run(launch + [args.parcelflow, "run", case, "--output", os.path.join(tmp, "out")], tmp)
-        wall = float(re.search(r"simulated in ([0-9.]+) s wall", coupled).group(1))
-        split = [l for l in coupled.splitlines() if l.startswith("t = ")][-1]
+        wall, split = loop_timing(coupled)
         t = settings["time"]
         steps = round(args.time / t["dem_step"])
         variables = dict(settings["liggghts"]["variables"], dem_step=repr(t["dem_step"]))

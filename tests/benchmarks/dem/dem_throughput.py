@@ -20,8 +20,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
 
 
-
-
 def throughput(output):
     seconds, _, steps, atoms = LOOP.findall(output)[-1]
     return int(steps) * int(atoms) / float(seconds)

@@ -17,12 +17,11 @@ import gzip
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, copy_case, run  # noqa: E402
+from parcelflow_runs import CASES, copy_case, fail, loop_timing, run  # noqa: E402
 
 TUTORIAL = "/usr/share/doc/openfoam-examples/examples/lagrangian/DPMFoam/Goldschmidt"
 OPENFOAM_BASHRC = "/usr/share/openfoam/etc/bashrc"
@@ -39,10 +38,8 @@ def run_parcelflow(args, work):
     case = copy_case(os.path.join(CASES, "openfoam_dpmfoam_goldschmidt"), work, edit)
     launch = args.mpiexec + ["-np", str(args.ranks)]
     out = run(launch + [args.parcelflow, "run", case, "--output", os.path.join(work, "out")], work)
-    wall = float(re.search(r"simulated in ([0-9.]+) s wall", out).group(1))
-    split = [line for line in out.splitlines() if line.startswith("t = ")][-1]
-    dem_steps = round(args.time / settings["time"]["dem_step"])
-    return wall, dem_steps, split.split("parcel-steps/s")[-1].strip()
+    wall, split = loop_timing(out)
+    return wall, round(args.time / settings["time"]["dem_step"]), split
 
 
 def copy_tutorial(work, end_time):
@@ -62,13 +59,10 @@ def run_dpmfoam(args, work):
     """Seconds per DPMFoam step (ExecutionTime differences) and the number of steps."""
     case = copy_tutorial(work, args.time)
     for program in ("blockMesh", "DPMFoam"):
-        done = subprocess.run(["bash", "-c", f"source {OPENFOAM_BASHRC} >/dev/null 2>&1; {program}"], cwd=case,
-                              capture_output=True, text=True, errors="replace")
-        if done.returncode != 0:
-            sys.exit(f"FAIL: {program} exited with {done.returncode}\n{done.stdout[-3000:]}{done.stderr[-3000:]}")
-    times = [float(t) for t in re.findall(r"^ExecutionTime = ([0-9.eE+-]+) s", done.stdout, flags=re.M)]
+        out = run(["bash", "-c", f"source {OPENFOAM_BASHRC} >/dev/null 2>&1; {program}"], case)
+    times = [float(t) for t in re.findall(r"^ExecutionTime = ([0-9.eE+-]+) s", out, flags=re.M)]
     if len(times) < 3:
-        sys.exit(f"FAIL: DPMFoam printed {len(times)} time steps; increase --time")
+        fail(f"DPMFoam printed {len(times)} time steps; increase --time")
     return (times[-1] - times[0]) / (len(times) - 1), len(times)
 
 

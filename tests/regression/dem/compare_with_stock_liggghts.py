@@ -49,8 +49,6 @@ def thermo_rows(output):
     return rows
 
 
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--parcelflow", required=True)

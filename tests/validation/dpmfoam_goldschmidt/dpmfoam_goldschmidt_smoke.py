@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, run_case  # noqa: E402
+from parcelflow_runs import CASES, fail, run_case  # noqa: E402
 
 END, G, BEADS = 1.0e-3, 9.81, 24750
 LATTICE_MEAN_Z = 0.0015 + 0.003 * (99 - 1) / 2
@@ -23,10 +23,6 @@ LATTICE_MEAN_Z = 0.0015 + 0.003 * (99 - 1) / 2
 def edit(case):
     case["time"]["end"] = END
     case["output"]["monitor_interval"] = END / 5
-
-
-def fail(message):
-    sys.exit("FAIL: " + message)
 
 
 def main():

@@ -27,7 +27,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, run_case  # noqa: E402
+from parcelflow_runs import CASES, fail, run_case  # noqa: E402
 
 CELLS = 16 * 5 * 94
 GAS_STEP, DEM_STEP, MONITOR_INTERVAL, END, G = 5e-4, 5e-4 / 12, 0.0025, 0.1, 9.81
@@ -69,10 +69,6 @@ def wall_impulse(log, dem_step, gas_start_step):
             force[int(parts[0])] = float(parts[1])
     steps = sorted(force)
     return sum(0.5 * (force[a] + force[b]) * (b - a) * dem_step for a, b in zip(steps, steps[1:]))
-
-
-def fail(message):
-    sys.exit("FAIL: " + message)
 
 
 def main():
