@@ -126,10 +126,16 @@ std::vector<InletRegionSettings> GasConfig::readInletRegions(const YAML::Node& r
   return out;
 }
 
-LinearSolverSettings GasConfig::readLinearSolver(const YamlSection& s,
-                                                 LinearSolverSettings fallback) {
-  s.allowOnly({"tolerance", "absolute_tolerance", "max_iterations", "preconditioner"});
+LinearSolverSettings GasConfig::readLinearSolver(const YamlSection& s, LinearSolverSettings fallback,
+                                                 bool reusable) {
   LinearSolverSettings l = fallback;
+  if (reusable) {
+    s.allowOnly({"tolerance", "absolute_tolerance", "max_iterations", "preconditioner",
+                 "preconditioner_reuse"});
+    l.preconditionerReuse = s.integer("preconditioner_reuse", fallback.preconditionerReuse, 1, 1000);
+  } else {
+    s.allowOnly({"tolerance", "absolute_tolerance", "max_iterations", "preconditioner"});
+  }
   l.relTolerance = s.number("tolerance", fallback.relTolerance, Range::closed(1e-16, 0.1));
   l.absTolerance = s.number("absolute_tolerance", fallback.absTolerance, Range::nonNegative());
   l.maxIterations = s.integer("max_iterations", fallback.maxIterations, 1, 100000);
@@ -158,9 +164,9 @@ SolverSettings GasConfig::readSolver(const YamlSection& s) {
       s.word("convection", "limited_linear_upwind", {"upwind", "limited_linear_upwind"});
   out.convection =
       conv == "upwind" ? ConvectionScheme::Upwind : ConvectionScheme::LimitedLinearUpwind;
-  if (s.has("pressure")) out.pressure = readLinearSolver(s.map("pressure"), out.pressure);
+  if (s.has("pressure")) out.pressure = readLinearSolver(s.map("pressure"), out.pressure, true);
   if (s.has("momentum")) {
-    out.momentum = readLinearSolver(s.map("momentum"), out.momentum);
+    out.momentum = readLinearSolver(s.map("momentum"), out.momentum, false);
     if (out.momentum.preconditioner != PreconditionerType::Jacobi)
       s.map("momentum").fail("preconditioner",
                              "must be jacobi (the momentum matrix is not symmetric)");

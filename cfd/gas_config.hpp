@@ -30,7 +30,10 @@ class GasConfig {
   static std::vector<BoundarySettings> readBoundaries(const YamlSection& s);
   static std::vector<InletRegionSettings> readInletRegions(const YAML::Node& root);
   static SolverSettings readSolver(const YamlSection& s);
-  static LinearSolverSettings readLinearSolver(const YamlSection& s, LinearSolverSettings fallback);
+  // reusable: the solver keeps its preconditioner over steps (the pressure solver), so the key
+  // preconditioner_reuse is allowed.
+  static LinearSolverSettings readLinearSolver(const YamlSection& s, LinearSolverSettings fallback,
+                                               bool reusable);
   GasSettings settings_;
 };
 

@@ -53,12 +53,13 @@ struct LinearSolverSettings {
   double absTolerance = 1e-30;  // on the residual 2-norm
   int maxIterations = 1000;
   PreconditionerType preconditioner = PreconditionerType::BlockIncompleteCholesky;
+  int preconditionerReuse = 1;  // gas steps one preconditioner serves at most (reused_preconditioner.hpp)
 };
 
 struct SolverSettings {
   int pisoCorrectors = 2;
   ConvectionScheme convection = ConvectionScheme::LimitedLinearUpwind;
-  LinearSolverSettings pressure{1e-8, 1e-30, 1000, PreconditionerType::BoomerAmg};
+  LinearSolverSettings pressure{1e-8, 1e-30, 1000, PreconditionerType::BoomerAmg, 20};
   LinearSolverSettings momentum{1e-8, 1e-30, 1000, PreconditionerType::Jacobi};
 };
 

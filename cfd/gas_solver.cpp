@@ -19,7 +19,8 @@ GasSolver::GasSolver(const GasSettings& settings, std::shared_ptr<const Mesh> me
       mesh_(std::move(mesh)),
       rho_(settings.gas.density),
       mu_(settings.gas.viscosity),
-      g_(settings.gas.gravity) {
+      g_(settings.gas.gravity),
+      pPrecond_(settings.solver.pressure.preconditioner, settings.solver.pressure.preconditionerReuse) {
   const int nLocal = mesh_->nLocalCells();
   alpha_.assign(nLocal, 1.0);
   alphaOld_ = alpha_;

@@ -20,6 +20,7 @@
 #include "krylov_solver.hpp"
 #include "ldu_matrix.hpp"
 #include "mesh.hpp"
+#include "reused_preconditioner.hpp"
 
 namespace parcelflow::cfd {
 
@@ -27,7 +28,8 @@ struct StepReport {
   double cfl = 0.0;                 // max over cells of 0.5 dt sum|phi_f| / (a_g V)
   int momentumIterations = 0;       // BiCGStab iterations, summed over the 3 components
   int pressureIterations = 0;       // PCG iterations, summed over the PISO correctors
-  int unconvergedSolves = 0;        // linear solves that stopped at max_iterations (never hidden)
+  int unconvergedSolves = 0;
+  bool pressurePreconditionerBuilt = false;  // this step built a new one (else it reused the kept one)        // linear solves that stopped at max_iterations (never hidden)
   double continuityError = 0.0;     // sum |cell continuity residual| / max(boundary + injected flow)
   double boundaryOutflow = 0.0;     // net volumetric gas flow out through all patches [m^3/s]
   double injectedFlow = 0.0;        // inlet regions [m^3/s]
@@ -101,9 +103,11 @@ class GasSolver {
   VectorField gradPrgh_, gradP_;
   ScalarField phi_, phiB_;  // internal (owner -> neighbour) and boundary (outward) volume fluxes
   std::unique_ptr<LduMatrix> mom_;
-  // The pressure matrix and its preconditioner are the same for all PISO correctors of a step.
+  // The pressure matrix is the same for all PISO correctors of a step; its preconditioner is kept
+  // over several steps.
   std::unique_ptr<LduMatrix> pEqn_;
   std::unique_ptr<KrylovSolver> pSolver_;
+  ReusedPreconditioner pPrecond_;
   VectorField bU_;                       // momentum source without the pressure gradient
   std::array<ScalarField, 3> diagExtra_;  // per-component diagonal (free-slip normal components)
   StepReport report_;

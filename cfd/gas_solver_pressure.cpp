@@ -90,8 +90,12 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
   for (int c = 0; c < nOwned; ++c)
     rhs[c] -= divHbyA[c] + m.cellVolume(c) * ((alpha_[c] - alphaOld_[c]) / dt - injection_[c]);
 
-  if (firstCorrector) pSolver_ = std::make_unique<KrylovSolver>(*pEqn_, settings_.solver.pressure);
+  if (firstCorrector) {
+    pSolver_ = std::make_unique<KrylovSolver>(*pEqn_, settings_.solver.pressure, pPrecond_.forStep(*pEqn_));
+    report_.pressurePreconditionerBuilt = pPrecond_.builtThisStep();
+  }
   const SolveStats stats = pSolver_->pcg(pRgh_, rhs);
+  if (firstCorrector) pPrecond_.recordIterations(stats.iterations);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
 

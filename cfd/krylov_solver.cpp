@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace parcelflow::cfd {
 
 KrylovSolver::KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& settings,
@@ -12,6 +11,10 @@ KrylovSolver::KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& 
       settings_(settings),
       extraDiag_(std::move(extraDiag)),
       precond_(makePreconditioner(matrix_, extraDiag_, settings_.preconditioner)) {}
+
+KrylovSolver::KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& settings,
+                           std::shared_ptr<const Preconditioner> precond)
+    : matrix_(matrix), settings_(settings), precond_(std::move(precond)) {}
 
 double KrylovSolver::dot(const ScalarField& a, const ScalarField& b) const {
   double local = 0.0;

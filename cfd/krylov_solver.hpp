@@ -24,6 +24,10 @@ class KrylovSolver {
   // The matrix must outlive the solver and keep its coefficients.
   KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& settings,
                ScalarField extraDiag = {});
+  // Uses a given preconditioner, e.g. one built for a nearby matrix of an earlier step: the solve
+  // stays exact, only the iteration count depends on how well it fits.
+  KrylovSolver(const LduMatrix& matrix, const LinearSolverSettings& settings,
+               std::shared_ptr<const Preconditioner> precond);
   // x: local field (initial guess on owned cells, ghosts refreshed on return); b: owned right side.
   SolveStats pcg(ScalarField& x, const ScalarField& b) const;
   SolveStats bicgstab(ScalarField& x, const ScalarField& b) const;
@@ -34,7 +38,7 @@ class KrylovSolver {
   const LduMatrix& matrix_;
   LinearSolverSettings settings_;
   ScalarField extraDiag_;
-  std::unique_ptr<Preconditioner> precond_;
+  std::shared_ptr<const Preconditioner> precond_;
 };
 
 }  // namespace parcelflow::cfd

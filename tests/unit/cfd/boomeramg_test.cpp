@@ -13,46 +13,15 @@
 #include <string>
 
 #include "cfd/config_error.hpp"
-#include "cfd/fvm.hpp"
 #include "cfd/gas_config.hpp"
 #include "cfd/hypre_library.hpp"
 #include "cfd/internal_error.hpp"
 #include "cfd/krylov_solver.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "pressure_problem.hpp"
 
 using namespace parcelflow::cfd;
 
 namespace {
-// The Goldschmidt bed's proportions (0.15 x 0.015 x 0.7 m) at half its resolution.
-Mesh bedMesh() {
-  MeshSettings s;
-  s.lengths = Vec3(0.15, 0.015, 0.7);
-  s.cells = {24, 3, 48};
-  return MeshBuilder::build(s, Geometry(), MPI_COMM_WORLD);
-}
-
-// a_f Dt_f of a PISO pressure equation: small in the bed (drag-dominated), varying with the gas
-// fraction there, large in the freeboard; outlet cells get the fixed-pressure boundary coefficient.
-struct PressureProblem {
-  explicit PressureProblem(const Mesh& m) : A(m), b(m.nOwnedCells()) {
-    ScalarField gamma(m.nInternalFaces());
-    for (int f = 0; f < m.nInternalFaces(); ++f) {
-      const Vec3& x = m.faceCentre(f);
-      gamma[f] = x[2] < 0.3 ? 1e-4 * (1.5 + std::sin(60.0 * x[0]) * std::cos(40.0 * x[2])) : 2e-3;
-    }
-    fvm::laplacian(A, gamma);
-    const double dz = 0.7 / 48;
-    ScalarField outlet(m.nOwnedCells(), 0.0);
-    for (int c = 0; c < m.nOwnedCells(); ++c) {
-      if (m.cellCentre(c)[2] > 0.7 - dz) outlet[c] = 2e-3 * (0.15 / 24) * (0.015 / 3) / (0.5 * dz);
-      b[c] = std::cos(20.0 * m.cellCentre(c)[0]) * (m.cellCentre(c)[2] < 0.3 ? 1e-6 : 1e-8);
-    }
-    fvm::Sp(A, outlet);
-  }
-  LduMatrix A;
-  ScalarField b;
-};
-
 SolveStats solve(const PressureProblem& p, PreconditionerType type, ScalarField& x,
                  double tolerance = 1e-13, int maxIterations = 5000) {
   x.assign(p.A.mesh().nLocalCells(), 0.0);
