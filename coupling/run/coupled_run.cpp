@@ -50,6 +50,7 @@ struct CoupledRun::State {
   // Counted, never silent: cells whose a_g was raised to the floor (cell-steps), parcels with no fluid
   // cell in their stencil (parcel-steps), parcels whose drag was evaluated at the floor (parcel-steps).
   long floor_hits = 0, orphans = 0, drag_floored = 0, drag_invalid = 0, drag_above_one = 0;
+  long pressure_iterations = 0, preconditioner_builds = 0, unconverged_solves = 0;  // same on all ranks
   double min_gas_fraction_seen = 1.0;
 
   double wall_start = 0.0, next_progress = 0.0;
@@ -210,7 +211,10 @@ bool CoupledRun::advance() {
   double t1 = MPI_Wtime();
   s.progress.split.add(Phase::coupling, t1 - t0);
 
-  s.gas->advance(dt);
+  const cfd::StepReport gas_report = s.gas->advance(dt);
+  s.pressure_iterations += gas_report.pressureIterations;
+  s.preconditioner_builds += gas_report.pressurePreconditionerBuilt ? 1 : 0;
+  s.unconverged_solves += gas_report.unconvergedSolves;
   double t2 = MPI_Wtime();
   s.progress.split.add(Phase::gas, t2 - t1);
 
@@ -310,6 +314,10 @@ void CoupledRun::finalize() {
                 "%ld parcel-steps without a fluid cell; %ld parcels lost\n",
                 s.step, s.time, s.progress.wall_seconds, min_seen, s.case_def.settings.coupling.gas_fraction_floor,
                 floor_hits, drag_floored, drag_invalid, drag_above_one, orphans, lost);
+    std::printf("parcelflow: gas: %.1f pressure iterations per step, pressure preconditioner built in %ld of %ld "
+                "steps, %ld linear solves stopped at max_iterations\n",
+                s.step > 0 ? static_cast<double>(s.pressure_iterations) / s.step : 0.0, s.preconditioner_builds,
+                s.step, s.unconverged_solves);
     std::printf("parcelflow: monitors in %s, fields in %s (open fields.xdmf in ParaView)\n",
                 s.monitors->path().c_str(), s.output.c_str());
   }
