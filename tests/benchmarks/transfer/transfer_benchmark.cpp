@@ -45,20 +45,19 @@ int main() {
   const std::size_t n = 100000;
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<double> pos(3 * n), v(3 * n), vol(n), kappa(n);
+  std::vector<double> pos(3 * n), v(3 * n), kappa(n);
   for (std::size_t p = 0; p < n; ++p) {
     for (int d = 0; d < 3; ++d) {
       pos[3 * p + d] = u(rng) * g.cells[d] * g.spacing[d];
       v[3 * p + d] = u(rng) - 0.5;
     }
-    vol[p] = 1e-9 * (1 + u(rng));
     kappa[p] = 1e-6 * (1 + u(rng));
   }
-  std::vector<double> uCell(3 * nCells, 0.3), uP(3 * n), q(5 * n), cQ(5 * nCells);
+  // The coupler's widest transfers: kappa and kappa v to the cells, u and grad p to the parcels.
+  std::vector<double> gasCell(6 * nCells, 0.3), gasP(6 * n), q(4 * n), cQ(4 * nCells);
   for (std::size_t p = 0; p < n; ++p) {
-    q[5 * p] = vol[p];
-    q[5 * p + 1] = kappa[p];
-    for (int d = 0; d < 3; ++d) q[5 * p + 2 + d] = kappa[p] * v[3 * p + d];
+    q[4 * p] = kappa[p];
+    for (int d = 0; d < 3; ++d) q[4 * p + 1 + d] = kappa[p] * v[3 * p + d];
   }
 
   std::printf("transfer benchmark: %zu parcels, %d cells, best of 5 (parcels per second, millions)\n", n, nCells);
@@ -68,13 +67,11 @@ int main() {
   for (int k = 0; k < 3; ++k) {
     StencilSet set;
     const double tBuild = best(5, [&] { buildStencils(kernels[k], g, lookup, n, pos.data(), set); });
-    const double tDep = best(5, [&] {
-      deposit(set, 5, q.data(), cQ.data());
-    });
-    const double tGat = best(5, [&] { gather(set, 3, uCell.data(), uP.data()); });
+    const double tDep = best(5, [&] { deposit(set, 4, q.data(), cQ.data()); });
+    const double tGat = best(5, [&] { gather(set, 6, gasCell.data(), gasP.data()); });
     const double tFly = best(5, [&] {
-      depositParcels(kernels[k], g, lookup, n, pos.data(), 5, q.data(), cQ.data());
-      gatherToParcels(kernels[k], g, lookup, n, pos.data(), 3, uCell.data(), uP.data());
+      depositParcels(kernels[k], g, lookup, n, pos.data(), 4, q.data(), cQ.data());
+      gatherToParcels(kernels[k], g, lookup, n, pos.data(), 6, gasCell.data(), gasP.data());
     });
     std::printf("%-20s %10.2f %10.2f %10.2f %12.2f %10.1f\n", names[k], n / tBuild * 1e-6, n / tDep * 1e-6,
                 n / tGat * 1e-6, n / tFly * 1e-6, double(set.cell.size()) / n);
