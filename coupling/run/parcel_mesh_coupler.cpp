@@ -26,7 +26,7 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
       gas_(gas),
       cell_volume_(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]),
       uses_mean_diameter_(usesMeanDiameter(drag_)),
-      slot_of_cell_(owners.backgroundSize(), -1) {
+      fluid_(grid, [&](int i, int j, int k) { return owners.ownerRank(backgroundCell(i, j, k)) >= 0; }) {
   grid_.validate();
   int rank = 0;
   MPI_Comm_rank(owners.comm(), &rank);
@@ -35,22 +35,22 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
     if (owners.ownerRank(c) == rank) ++n_owned_;
 }
 
-
 TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
-  for (long cell : touched_) slot_of_cell_[cell] = -1;
-  touched_.clear();
   parcels_ = parcels;
-  auto assignSlot = [this](int i, int j, int k) {
-    const long cell = backgroundCell(i, j, k);
-    if (owners_.ownerRank(cell) < 0) return -1;
-    int& slot = slot_of_cell_[cell];
-    if (slot < 0) {
-      slot = static_cast<int>(touched_.size());
-      touched_.push_back(cell);
-    }
-    return slot;
-  };
-  return buildStencils(kernel_, grid_, assignSlot, parcels.size, parcels.x, stencils_);
+  const TransferStats stats = buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_);
+  // Every fluid cell of the box is exchanged (cells no window reaches carry zeros): the box is this
+  // rank's parcels' neighbourhood, so it is about the cells the stencils touch.
+  touched_.clear();
+  box_of_touched_.clear();
+  const auto& lo = stencils_.lo;
+  for (int k = lo[2]; k < lo[2] + stencils_.cells[2]; ++k)
+    for (int j = lo[1]; j < lo[1] + stencils_.cells[1]; ++j)
+      for (int i = lo[0]; i < lo[0] + stencils_.cells[0]; ++i)
+        if (fluid_.isFluid(i, j, k)) {
+          touched_.push_back(backgroundCell(i, j, k));
+          box_of_touched_.push_back(stencils_.boxIndex(i, j, k));
+        }
+  return stats;
 }
 
 std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& owned, int width) const {
@@ -61,8 +61,11 @@ std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& o
 
 void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, int width,
                                         std::vector<double>& owned) const {
-  std::vector<double> on_touched(touched_.size() * width, 0.0);
-  deposit(stencils_, width, per_parcel.data(), on_touched.data());
+  std::vector<double> on_box(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
+  deposit(stencils_, width, per_parcel.data(), on_box.data());
+  std::vector<double> on_touched(touched_.size() * width);
+  for (std::size_t t = 0; t < touched_.size(); ++t)
+    for (int m = 0; m < width; ++m) on_touched[width * t + m] = on_box[width * box_of_touched_[t] + m];
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
   exchange_.sumToOwners(touched_, on_touched, width, owned);
 }
@@ -70,8 +73,12 @@ void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, i
 std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>& owned, int width,
                                                        double orphan_value) const {
   const std::vector<double> on_touched = fetchTouched(owned, width);
+  // Non-fluid box cells stay 0: windows reach them with weights that must contribute nothing.
+  std::vector<double> on_box(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
+  for (std::size_t t = 0; t < touched_.size(); ++t)
+    for (int m = 0; m < width; ++m) on_box[width * box_of_touched_[t] + m] = on_touched[width * t + m];
   std::vector<double> at_parcels(parcels_.size * width);
-  gather(stencils_, width, on_touched.data(), at_parcels.data(), orphan_value);
+  gather(stencils_, width, on_box.data(), at_parcels.data(), orphan_value);
   return at_parcels;
 }
 

@@ -7,17 +7,18 @@
 // owner anywhere), so deposited volume and momentum are conserved exactly, at walls and across ranks.
 //
 // One step: beginStep(parcels) -> depositSolids -> computeDrag -> (gas advances) -> gatherGas.
-// beginStep computes every parcel's stencil once (weights and touched slots); all transfers of the
-// step reuse it, so the weights are the same both ways.
+// beginStep computes every parcel's stencil once (box_stencils.hpp: separable windows on the box of
+// background cells around this rank's parcels); all transfers of the step reuse it, so the weights are
+// the same both ways. The box's fluid cells are the cells exchanged with their owners.
 #pragma once
 
 #include <vector>
 
 #include "background_grid.hpp"
+#include "box_stencils.hpp"
 #include "cell_exchange.h"
 #include "parcel_drag.hpp"
 #include "stencil.hpp"
-#include "stencil_set.hpp"
 #include "transfer_kernel.hpp"
 
 namespace parcelflow::coupling {
@@ -75,7 +76,6 @@ class ParcelMeshCoupler {
   void gatherGas(const std::vector<double>& owned_velocity, const std::vector<double>& owned_grad_p,
                  GasAtParcels& at_parcels);
 
-  std::size_t touchedCells() const { return touched_.size(); }
   double cellVolume() const { return cell_volume_; }
 
  private:
@@ -99,10 +99,12 @@ class ParcelMeshCoupler {
   bool uses_mean_diameter_;           // the drag law reads the local Sauter mean
   std::vector<double> owned_moments_;  // per owned cell: sum w np V_p, sum w np dp^2 (if used)
 
+  FluidCells fluid_;  // background cells some rank owns
+
   ParcelBatch parcels_;
-  std::vector<int> slot_of_cell_;   // background cell -> touched slot, -1 when untouched this step
-  std::vector<long> touched_;       // touched slot -> background cell
-  StencilSet stencils_;             // this step's stencils, cells as touched slots
+  BoxStencils stencils_;                // this step's stencils
+  std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
+  std::vector<long> box_of_touched_;    // their box index
 };
 
 }  // namespace parcelflow::coupling

@@ -21,9 +21,10 @@ class CentroidKernel {
 
   int searchRadius() const { return r_; }
 
-  template <class LocalCell>
-  StencilResult stencil(const BackgroundGrid& g, const double* x, LocalCell& localCell, Stencil& s) const {
-    s.size = 0;
+  // One cell with factor 1: the containing one if it is fluid (isFluid(i, j, k)), else the nearest
+  // fluid cell within +-searchRadius (fallback), else none (orphan).
+  template <class IsFluid>
+  StencilResult window(const BackgroundGrid& g, const double* x, const IsFluid& isFluid, Window& w) const {
     int ic[3];
     bool inside = true;
     for (int d = 0; d < 3; ++d) {
@@ -36,43 +37,51 @@ class CentroidKernel {
       }
       ic[d] = i;
     }
-    if (inside) {
-      const int c = localCell(ic[0], ic[1], ic[2]);
-      if (c >= 0) {
-        s.cell[0] = c;
-        s.weight[0] = 1.0;
-        s.size = 1;
-        return StencilResult::ok;
-      }
+    if (inside && isFluid(ic[0], ic[1], ic[2])) {
+      setCell(ic, w);
+      return StencilResult::ok;
     }
     double best = 0.0;
-    int bestCell = -1;
+    int bestCell[3] = {-1, -1, -1};
     for (int k = ic[2] - r_; k <= ic[2] + r_; ++k) {
       if (k < 0 || k >= g.cells[2]) continue;
       for (int j = ic[1] - r_; j <= ic[1] + r_; ++j) {
         if (j < 0 || j >= g.cells[1]) continue;
         for (int i = ic[0] - r_; i <= ic[0] + r_; ++i) {
-          if (i < 0 || i >= g.cells[0]) continue;
-          const int c = localCell(i, j, k);
-          if (c < 0) continue;
+          if (i < 0 || i >= g.cells[0] || !isFluid(i, j, k)) continue;
           const double dx = g.cellCentre(0, i) - x[0], dy = g.cellCentre(1, j) - x[1],
                        dz = g.cellCentre(2, k) - x[2];
           const double dist2 = dx * dx + dy * dy + dz * dz;
-          if (bestCell < 0 || dist2 < best) {
+          if (bestCell[0] < 0 || dist2 < best) {
             best = dist2;
-            bestCell = c;
+            bestCell[0] = i;
+            bestCell[1] = j;
+            bestCell[2] = k;
           }
         }
       }
     }
-    if (bestCell < 0) return StencilResult::orphan;
-    s.cell[0] = bestCell;
-    s.weight[0] = 1.0;
-    s.size = 1;
+    if (bestCell[0] < 0) return StencilResult::orphan;
+    setCell(bestCell, w);
     return StencilResult::fallback;
   }
 
+  template <class LocalCell>
+  StencilResult stencil(const BackgroundGrid& g, const double* x, LocalCell& localCell, Stencil& s) const {
+    Window w;
+    const auto isFluid = [&](int i, int j, int k) { return localCell(i, j, k) >= 0; };
+    return expandWindow(w, window(g, x, isFluid, w), localCell, s);
+  }
+
  private:
+  static void setCell(const int ijk[3], Window& w) {
+    for (int d = 0; d < 3; ++d) {
+      w.lo[d] = ijk[d];
+      w.n[d] = 1;
+      w.f[d][0] = 1.0;
+    }
+  }
+
   int r_;
 };
 

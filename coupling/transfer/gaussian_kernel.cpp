@@ -5,7 +5,8 @@
 
 namespace parcelflow::coupling {
 
-GaussianKernel::GaussianKernel(double sharpness, int radius) : a_(sharpness), r_(radius) {
+GaussianKernel::GaussianKernel(double sharpness, int radius)
+    : a_(sharpness), r_(radius), expMinus2a_(std::exp(-2.0 * sharpness)) {
   if (!(sharpness > 0.0) || !std::isfinite(sharpness))
     throw std::invalid_argument("gaussian kernel: sharpness a must be > 0, got " + std::to_string(sharpness));
   if (radius < 0 || radius > maxRadius)

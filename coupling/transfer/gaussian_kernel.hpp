@@ -19,7 +19,7 @@ class GaussianKernel {
  public:
   static constexpr const char* typeName = "gaussian";
   static constexpr int maxRadius = 4;
-  static_assert((2 * maxRadius + 1) * (2 * maxRadius + 1) * (2 * maxRadius + 1) <= Stencil::capacity);
+  static_assert(2 * maxRadius + 1 <= Window::maxWidth);
 
   // Throws std::invalid_argument unless a > 0 and 0 <= radius <= maxRadius.
   explicit GaussianKernel(double sharpness = 1.0, int radius = 2);
@@ -32,49 +32,48 @@ class GaussianKernel {
   // The 3-D fraction is the product over the axes.
   static double retainedMassFraction1D(double sharpness, int radius, double offset);
 
-  template <class LocalCell>
-  StencilResult stencil(const BackgroundGrid& g, const double* x, LocalCell& localCell, Stencil& s) const {
-    s.size = 0;
-    constexpr int width = 2 * maxRadius + 1;
-    double f[3][width];
-    int lo[3], hi[3];
+  // The window of a parcel at x: +-R cells around its cell, clipped to the background (fluid or not:
+  // the renormalisation over fluid cells is the caller's); orphan beyond R cells outside the box.
+  template <class IsFluid>
+  StencilResult window(const BackgroundGrid& g, const double* x, const IsFluid&, Window& w) const {
     for (int d = 0; d < 3; ++d) {
       const double xi = (x[d] - g.origin[d]) / g.spacing[d];  // position in cell units
       // also rejects NaN: no stencil cell can exist beyond R cells outside the box
       if (!(xi > -r_ - 1.0 && xi < g.cells[d] + r_ + 1.0)) return StencilResult::orphan;
       const int ic = static_cast<int>(std::floor(xi));
-      lo[d] = ic - r_ < 0 ? 0 : ic - r_;
-      hi[d] = ic + r_ > g.cells[d] - 1 ? g.cells[d] - 1 : ic + r_;
-      if (lo[d] > hi[d]) return StencilResult::orphan;
-      for (int i = lo[d]; i <= hi[d]; ++i) {
-        const double t = (i + 0.5) - xi;
-        f[d][i - lo[d]] = std::exp(-a_ * t * t);
+      const int lo = ic - r_ < 0 ? 0 : ic - r_;
+      const int hi = ic + r_ > g.cells[d] - 1 ? g.cells[d] - 1 : ic + r_;
+      if (lo > hi) return StencilResult::orphan;
+      w.lo[d] = lo;
+      w.n[d] = hi - lo + 1;
+      // exp(-a t^2) at t = t0 + m, m = -R..R, from the centre outwards with 3 exponentials: the ratio of
+      // neighbours is exp(-a (2 t + 1)) upwards, and each ratio is exp(-2a) times the previous one.
+      // All ratios are <= 1 (|t0| <= 1/2), so far factors underflow to 0 as exp itself would.
+      const double t0 = (ic + 0.5) - xi;
+      double f[Window::maxWidth];
+      f[r_] = std::exp(-a_ * t0 * t0);
+      double up = std::exp(-a_ * (2.0 * t0 + 1.0)), down = std::exp(-a_ * (1.0 - 2.0 * t0));
+      for (int m = 1; m <= r_; ++m) {
+        f[r_ + m] = f[r_ + m - 1] * up;
+        f[r_ - m] = f[r_ - m + 1] * down;
+        up *= expMinus2a_;
+        down *= expMinus2a_;
       }
+      for (int i = lo; i <= hi; ++i) w.f[d][i - lo] = f[i - ic + r_];
     }
-    double sum = 0.0;
-    for (int k = lo[2]; k <= hi[2]; ++k) {
-      const double fz = f[2][k - lo[2]];
-      for (int j = lo[1]; j <= hi[1]; ++j) {
-        const double fyz = f[1][j - lo[1]] * fz;
-        for (int i = lo[0]; i <= hi[0]; ++i) {
-          const int c = localCell(i, j, k);
-          if (c < 0) continue;
-          const double w = f[0][i - lo[0]] * fyz;
-          s.cell[s.size] = c;
-          s.weight[s.size] = w;
-          ++s.size;
-          sum += w;
-        }
-      }
-    }
-    if (s.size == 0) return StencilResult::orphan;
-    for (int m = 0; m < s.size; ++m) s.weight[m] /= sum;
     return StencilResult::ok;
+  }
+
+  template <class LocalCell>
+  StencilResult stencil(const BackgroundGrid& g, const double* x, LocalCell& localCell, Stencil& s) const {
+    Window w;
+    return expandWindow(w, window(g, x, localCell, w), localCell, s);
   }
 
  private:
   double a_;
   int r_;
+  double expMinus2a_;
 };
 
 }  // namespace parcelflow::coupling

@@ -78,12 +78,7 @@ TEST(BoomerAmg, HypreErrorBecomesInternalErrorAndIsCleared) {
 }
 
 TEST(BoomerAmg, PressureDefaultBlockIcStillSelectableMomentumRefuses) {
-  const std::string base = R"(
-mesh: {lengths: [1, 1, 1], cells: [2, 2, 2]}
-gas: {density: 1.2, viscosity: 1.8e-5}
-boundaries: {zmin: {type: wall}, zmax: {type: pressure_outlet}, xmin: {type: wall},
-             xmax: {type: wall}, ymin: {type: wall}, ymax: {type: wall}}
-)";
+  const std::string base = kSmallGasCase;
   EXPECT_EQ(GasConfig(YAML::Load(base)).settings().solver.pressure.preconditioner,
             PreconditionerType::BoomerAmg);
   const GasConfig blockIc(YAML::Load(base + "solver: {pressure: {preconditioner: block_ic}}"));

@@ -1,5 +1,6 @@
 #pragma once
-// A pressure-like Poisson problem for the preconditioner tests: a_f Dt_f of a PISO pressure equation,
+// For the pressure solver tests: the smallest valid gas case (append a `solver:` map to try settings),
+// and a pressure-like Poisson problem: a_f Dt_f of a PISO pressure equation,
 // small in the bed (drag-dominated) and varying with the gas fraction there, large in the freeboard;
 // outlet cells get the fixed-pressure boundary coefficient. `bedShift` moves the bed's pattern
 // (in m), as a later gas step would: a nearby matrix.
@@ -12,6 +13,13 @@
 #include "cfd/mesh_builder.hpp"
 
 namespace parcelflow::cfd {
+
+inline const char* const kSmallGasCase = R"(
+mesh: {lengths: [1, 1, 1], cells: [2, 2, 2]}
+gas: {density: 1.2, viscosity: 1.8e-5}
+boundaries: {zmin: {type: wall}, zmax: {type: pressure_outlet}, xmin: {type: wall},
+             xmax: {type: wall}, ymin: {type: wall}, ymax: {type: wall}}
+)";
 
 // The Goldschmidt bed's proportions (0.15 x 0.015 x 0.7 m) at half its resolution.
 inline Mesh bedMesh() {

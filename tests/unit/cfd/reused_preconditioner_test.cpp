@@ -77,12 +77,7 @@ TEST(ReusedPreconditioner, RebuiltAfterMaxStepsOrWhenIterationsMoreThanDouble) {
 }
 
 TEST(ReusedPreconditioner, ReuseIsAPressureSetting) {
-  const std::string base = R"(
-mesh: {lengths: [1, 1, 1], cells: [2, 2, 2]}
-gas: {density: 1.2, viscosity: 1.8e-5}
-boundaries: {zmin: {type: wall}, zmax: {type: pressure_outlet}, xmin: {type: wall},
-             xmax: {type: wall}, ymin: {type: wall}, ymax: {type: wall}}
-)";
+  const std::string base = kSmallGasCase;
   EXPECT_EQ(GasConfig(YAML::Load(base)).settings().solver.pressure.preconditionerReuse, 20);
   EXPECT_EQ(GasConfig(YAML::Load(base + "solver: {pressure: {preconditioner_reuse: 1}}"))
                 .settings().solver.pressure.preconditionerReuse, 1);

@@ -1,0 +1,169 @@
+#include "box_stencils.hpp"
+
+#include <algorithm>
+#include <climits>
+
+namespace parcelflow::coupling {
+
+void FluidCells::buildTable() {
+  const std::size_t sx = cells_[0] + 1, sy = cells_[1] + 1;
+  nonFluidBelow_.assign(sx * sy * (cells_[2] + 1), 0);
+  auto at = [&](int i, int j, int k) -> long& { return nonFluidBelow_[(k * sy + j) * sx + i]; };
+  for (int k = 0; k < cells_[2]; ++k)
+    for (int j = 0; j < cells_[1]; ++j)
+      for (int i = 0; i < cells_[0]; ++i)
+        at(i + 1, j + 1, k + 1) = (isFluid(i, j, k) ? 0 : 1) + at(i, j + 1, k + 1) + at(i + 1, j, k + 1) +
+                                  at(i + 1, j + 1, k) - at(i, j, k + 1) - at(i, j + 1, k) - at(i + 1, j, k) +
+                                  at(i, j, k);
+}
+
+bool FluidCells::allFluid(const Window& w) const {
+  const std::size_t sx = cells_[0] + 1, sy = cells_[1] + 1;
+  auto at = [&](int i, int j, int k) { return nonFluidBelow_[(k * sy + j) * sx + i]; };
+  const int i0 = w.lo[0], j0 = w.lo[1], k0 = w.lo[2];
+  const int i1 = i0 + w.n[0], j1 = j0 + w.n[1], k1 = k0 + w.n[2];
+  const long nonFluid = at(i1, j1, k1) - at(i0, j1, k1) - at(i1, j0, k1) - at(i1, j1, k0) + at(i0, j0, k1) +
+                        at(i0, j1, k0) + at(i1, j0, k0) - at(i0, j0, k0);
+  return nonFluid == 0;
+}
+
+namespace {
+
+// Sum of the window's weights over its fluid cells (0 if it has none).
+double fluidSum(const Window& w, const FluidCells& fluid) {
+  if (fluid.allFluid(w)) {
+    double s[3] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < 3; ++d)
+      for (int a = 0; a < w.n[d]; ++a) s[d] += w.f[d][a];
+    return s[0] * s[1] * s[2];
+  }
+  double sum = 0.0;
+  for (int c = 0; c < w.n[2]; ++c)
+    for (int b = 0; b < w.n[1]; ++b)
+      for (int a = 0; a < w.n[0]; ++a)
+        if (fluid.isFluid(w.lo[0] + a, w.lo[1] + b, w.lo[2] + c)) sum += w.f[0][a] * w.f[1][b] * w.f[2][c];
+  return sum;
+}
+
+template <class Kernel>
+TransferStats buildWith(const Kernel& kernel, const BackgroundGrid& grid, const FluidCells& fluid, std::size_t n,
+                        const double* pos, BoxStencils& out) {
+  out.windows.resize(n);
+  out.first.assign(n, -1);
+  int lo[3] = {INT_MAX, INT_MAX, INT_MAX}, hi[3] = {INT_MIN, INT_MIN, INT_MIN};
+  const auto isFluid = [&](int i, int j, int k) { return fluid.isFluid(i, j, k); };
+  TransferStats stats;
+  for (std::size_t p = 0; p < n; ++p) {
+    Window& w = out.windows[p];
+    StencilResult r = kernel.window(grid, pos + 3 * p, isFluid, w);
+    if (r != StencilResult::orphan) {
+      const double sum = fluidSum(w, fluid);
+      if (sum > 0.0) {
+        for (int c = 0; c < w.n[2]; ++c) w.f[2][c] /= sum;
+        out.first[p] = 0;  // a valid window; its box index follows once the box is known
+        for (int d = 0; d < 3; ++d) {
+          lo[d] = std::min(lo[d], w.lo[d]);
+          hi[d] = std::max(hi[d], w.lo[d] + w.n[d] - 1);
+        }
+      } else {
+        r = StencilResult::orphan;
+      }
+    }
+    stats.record(p, r);
+  }
+  const bool empty = lo[0] > hi[0];
+  for (int d = 0; d < 3; ++d) {
+    out.lo[d] = empty ? 0 : lo[d];
+    out.cells[d] = empty ? 0 : hi[d] - lo[d] + 1;
+  }
+  for (std::size_t p = 0; p < n; ++p)
+    if (out.first[p] == 0) out.first[p] = out.boxIndex(out.windows[p].lo[0], out.windows[p].lo[1], out.windows[p].lo[2]);
+  return stats;
+}
+
+// The loops run along each window row, which is contiguous in the box arrays: a row of n[0] cells is
+// one stretch of n[0] ncomp doubles, updated by one multiply-add loop (the x factors are folded into
+// the parcel's values first). Width > 0: the component count is known at compile time; Width = 0
+// reads it from `ncomp`.
+template <int Width>
+void depositLoop(const BoxStencils& set, std::size_t ncomp, const double* q, double* boxQ) {
+  const std::size_t nc = Width > 0 ? static_cast<std::size_t>(Width) : ncomp;
+  const std::size_t sy = nc * set.cells[0], sz = sy * set.cells[1];
+  std::vector<double> xq(Window::maxWidth * nc);  // f_x[a] q[m] at a nc + m
+  for (std::size_t p = 0; p < set.parcels(); ++p) {
+    if (set.first[p] < 0) continue;
+    const Window& w = set.windows[p];
+    const double* qp = q + nc * p;
+    const std::size_t len = nc * w.n[0];
+    for (int a = 0; a < w.n[0]; ++a)
+      for (std::size_t m = 0; m < nc; ++m) xq[nc * a + m] = w.f[0][a] * qp[m];
+    double* box = boxQ + nc * static_cast<std::size_t>(set.first[p]);
+    for (int c = 0; c < w.n[2]; ++c)
+      for (int b = 0; b < w.n[1]; ++b) {
+        const double wzy = w.f[2][c] * w.f[1][b];
+        double* row = box + c * sz + b * sy;
+        for (std::size_t e = 0; e < len; ++e) row[e] += wzy * xq[e];
+      }
+  }
+}
+
+template <int Width>
+void gatherLoop(const BoxStencils& set, std::size_t ncomp, const double* boxQ, double* parcelQ,
+                double orphanValue) {
+  const std::size_t nc = Width > 0 ? static_cast<std::size_t>(Width) : ncomp;
+  const std::size_t sy = nc * set.cells[0], sz = sy * set.cells[1];
+  std::vector<double> rows(Window::maxWidth * nc);  // sum over the rows of f_z f_y value, per x cell
+  for (std::size_t p = 0; p < set.parcels(); ++p) {
+    double* out = parcelQ + nc * p;
+    if (set.first[p] < 0) {
+      for (std::size_t m = 0; m < nc; ++m) out[m] = orphanValue;
+      continue;
+    }
+    const Window& w = set.windows[p];
+    const std::size_t len = nc * w.n[0];
+    for (std::size_t e = 0; e < len; ++e) rows[e] = 0.0;
+    const double* box = boxQ + nc * static_cast<std::size_t>(set.first[p]);
+    for (int c = 0; c < w.n[2]; ++c)
+      for (int b = 0; b < w.n[1]; ++b) {
+        const double wzy = w.f[2][c] * w.f[1][b];
+        const double* row = box + c * sz + b * sy;
+        for (std::size_t e = 0; e < len; ++e) rows[e] += wzy * row[e];
+      }
+    for (std::size_t m = 0; m < nc; ++m) {
+      double sum = 0.0;
+      for (int a = 0; a < w.n[0]; ++a) sum += w.f[0][a] * rows[nc * a + m];
+      out[m] = sum;
+    }
+  }
+}
+
+// Calls loop(integral_constant<int, W>) with W = ncomp for the widths the coupler uses, else W = 0.
+template <class Loop>
+void withWidth(int ncomp, Loop&& loop) {
+  switch (ncomp) {
+    case 1: return loop(std::integral_constant<int, 1>{});
+    case 2: return loop(std::integral_constant<int, 2>{});
+    case 4: return loop(std::integral_constant<int, 4>{});
+    case 6: return loop(std::integral_constant<int, 6>{});
+    default: return loop(std::integral_constant<int, 0>{});
+  }
+}
+
+}  // namespace
+
+TransferStats buildBoxStencils(const TransferKernel& kernel, const BackgroundGrid& grid, const FluidCells& fluid,
+                               std::size_t n, const double* pos, BoxStencils& out) {
+  return std::visit([&](const auto& k) { return buildWith(k, grid, fluid, n, pos, out); }, kernel);
+}
+
+void deposit(const BoxStencils& set, int ncomp, const double* q, double* boxQ) {
+  withWidth(ncomp, [&](auto width) { depositLoop<width()>(set, static_cast<std::size_t>(ncomp), q, boxQ); });
+}
+
+void gather(const BoxStencils& set, int ncomp, const double* boxQ, double* parcelQ, double orphanValue) {
+  withWidth(ncomp, [&](auto width) {
+    gatherLoop<width()>(set, static_cast<std::size_t>(ncomp), boxQ, parcelQ, orphanValue);
+  });
+}
+
+}  // namespace parcelflow::coupling
