@@ -28,8 +28,8 @@ struct StepReport {
   double cfl = 0.0;                 // max over cells of 0.5 dt sum|phi_f| / (a_g V)
   int momentumIterations = 0;       // BiCGStab iterations, summed over the 3 components
   int pressureIterations = 0;       // PCG iterations, summed over the PISO correctors
-  int unconvergedSolves = 0;
-  bool pressurePreconditionerBuilt = false;  // this step built a new one (else it reused the kept one)        // linear solves that stopped at max_iterations (never hidden)
+  int unconvergedSolves = 0;        // linear solves that stopped at max_iterations (never hidden)
+  bool pressurePreconditionerBuilt = false;  // this step built it (else it reused the kept one)
   double continuityError = 0.0;     // sum |cell continuity residual| / max(boundary + injected flow)
   double boundaryOutflow = 0.0;     // net volumetric gas flow out through all patches [m^3/s]
   double injectedFlow = 0.0;        // inlet regions [m^3/s]

@@ -15,7 +15,8 @@ class Preconditioner {
   virtual void apply(const ScalarField& r, ScalarField& z) const = 0;
 };
 
-// The matrix and extraDiag must outlive the preconditioner (collective for boomeramg).
+// Collective for boomeramg. The preconditioner copies what it needs: it may outlive the matrix and
+// extraDiag (ReusedPreconditioner keeps it over steps whose matrices come and go).
 std::unique_ptr<Preconditioner> makePreconditioner(const LduMatrix& matrix,
                                                    const ScalarField& extraDiag,
                                                    PreconditionerType type);
