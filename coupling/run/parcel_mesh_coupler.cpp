@@ -18,7 +18,6 @@ constexpr double kPi = 3.14159265358979323846;
 ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwnerMap& owners, TransferKernel kernel,
                                      DragLaw drag, DragLimits limits, GasProperties gas)
     : grid_(grid),
-      owners_(owners),
       exchange_(owners),
       kernel_(std::move(kernel)),
       drag_(std::move(drag)),

@@ -1,9 +1,8 @@
 // Particle <-> mesh transfer of one coupling step across MPI ranks (DESIGN sections 4 and 7).
 //
-// Parcels live where LIGGGHTS' decomposition puts them, gas cells where METIS puts them. Each rank finds
-// the background cells its parcels' kernel stencils touch, deposits into those "touched" cells locally,
-// and CellExchange sums them into the owning ranks (and fetches owned gas values back over the same
-// pattern). Weights are renormalised over all fluid cells of the stencil (a cell is fluid if it has an
+// Parcels live where LIGGGHTS' decomposition puts them, gas cells where METIS puts them. Each rank
+// deposits on the box of background cells its parcels' kernel windows span, and CellExchange sums the
+// box's fluid cells into the owning ranks (and fetches owned gas values back over the same pattern). Weights are renormalised over all fluid cells of the stencil (a cell is fluid if it has an
 // owner anywhere), so deposited volume and momentum are conserved exactly, at walls and across ranks.
 //
 // One step: beginStep(parcels) -> depositSolids -> computeDrag -> (gas advances) -> gatherGas.
@@ -88,7 +87,6 @@ class ParcelMeshCoupler {
   }
 
   BackgroundGrid grid_;
-  const CellOwnerMap& owners_;
   CellExchange exchange_;
   TransferKernel kernel_;
   DragLaw drag_;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <climits>
+#include <type_traits>
+#include <variant>
 
 namespace parcelflow::coupling {
 

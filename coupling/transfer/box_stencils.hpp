@@ -13,8 +13,6 @@
 #include <array>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
-#include <variant>
 #include <vector>
 
 #include "background_grid.hpp"
