@@ -11,4 +11,4 @@ ranks=$(( $(nproc) >= 2 ? 2 : 1 ))
 echo "== running cases/goldschmidt_segregation for $end s of simulated time on $ranks rank(s);" \
      "output in runs/goldschmidt_segregation"
 mpirun -np "$ranks" "$build/bin/parcelflow" run "$case_dir" --output "$out" --end "$end"
-/usr/bin/python3 "$case_dir/plot.py" "$out"
+"$case_dir/plot.py" "$out"

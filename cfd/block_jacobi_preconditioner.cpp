@@ -12,7 +12,7 @@ BlockJacobiPreconditioner::BlockJacobiPreconditioner(const LduMatrix& matrix,
     inverseDiag_.resize(nOwned_);
     for (int c = 0; c < nOwned_; ++c) {
       const double d = matrix.diag()[c] + (extraDiag.empty() ? 0.0 : extraDiag[c]);
-      PARCELFLOW_CFD_ASSERT(d != 0.0, "zero diagonal in a gas matrix");
+      PARCELFLOW_ASSERT(d != 0.0, "zero diagonal in a gas matrix");
       inverseDiag_[c] = 1.0 / d;
     }
     return;
@@ -21,11 +21,11 @@ BlockJacobiPreconditioner::BlockJacobiPreconditioner(const LduMatrix& matrix,
   if (type_ == PreconditionerType::BlockIncompleteCholesky) {
     ic_ = std::make_unique<Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::AMDOrdering<int>>>();
     ic_->compute(block);
-    PARCELFLOW_CFD_ASSERT(ic_->info() == Eigen::Success, "incomplete Cholesky failed");
+    PARCELFLOW_ASSERT(ic_->info() == Eigen::Success, "incomplete Cholesky failed");
   } else {
     ldlt_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
     ldlt_->compute(block);
-    PARCELFLOW_CFD_ASSERT(ldlt_->info() == Eigen::Success, "block Cholesky failed");
+    PARCELFLOW_ASSERT(ldlt_->info() == Eigen::Success, "block Cholesky failed");
   }
 }
 

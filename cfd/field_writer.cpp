@@ -1,75 +1,34 @@
 #include "field_writer.hpp"
 
-#include <hdf5.h>
-
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
-#include "config_error.hpp"
+#include "hdf5_file.hpp"
 #include "internal_error.hpp"
 
 namespace parcelflow::cfd {
 
-namespace {
-// One parallel HDF5 file open for writing; closes on scope exit.
-class H5File {
- public:
-  H5File(const std::string& path, MPI_Comm comm) {
-    const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-    H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL);
-    id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
-    H5Pclose(fapl);
-    if (id_ < 0) throw ConfigError("cannot create HDF5 file " + path + " (does the folder exist?)");
-  }
-  ~H5File() { H5Fclose(id_); }
-  H5File(const H5File&) = delete;
-  H5File& operator=(const H5File&) = delete;
-
-  // Writes rows [offset, offset + rows) of a (totalRows x width) dataset, collectively.
-  template <class T>
-  void write(const std::string& name, hid_t type, const T* data, long totalRows, long offset,
-             long rows, int width) {
-    hsize_t dims[2] = {static_cast<hsize_t>(totalRows), static_cast<hsize_t>(width)};
-    const int rank = width == 1 ? 1 : 2;
-    const hid_t fileSpace = H5Screate_simple(rank, dims, nullptr);
-    const hid_t set = H5Dcreate2(id_, name.c_str(), type, fileSpace, H5P_DEFAULT, H5P_DEFAULT,
-                                 H5P_DEFAULT);
-    hsize_t start[2] = {static_cast<hsize_t>(offset), 0};
-    hsize_t count[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(width)};
-    const hid_t memSpace = H5Screate_simple(rank, count, nullptr);
-    if (rows > 0) {
-      H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, start, nullptr, count, nullptr);
-    } else {
-      H5Sselect_none(fileSpace);
-      H5Sselect_none(memSpace);
-    }
-    const hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
-    H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE);
-    const herr_t status = H5Dwrite(set, type, memSpace, fileSpace, dxpl, data);
-    PARCELFLOW_CFD_ASSERT(status >= 0, "HDF5 write of " + name + " failed");
-    H5Pclose(dxpl);
-    H5Sclose(memSpace);
-    H5Sclose(fileSpace);
-    H5Dclose(set);
-  }
-
- private:
-  hid_t id_;
-};
-
-std::string baseName(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
-}  // namespace
 
 FieldWriter::FieldWriter(const Mesh& mesh, std::string directory, std::string name)
     : mesh_(mesh), directory_(std::move(directory)), name_(std::move(name)) {
-  long owned = mesh_.nOwnedCells();
-  MPI_Exscan(&owned, &offset_, 1, MPI_LONG, MPI_SUM, mesh_.comm());
-  if (mesh_.rank() == 0) offset_ = 0;  // MPI_Exscan leaves rank 0's result undefined
+  for (int c = 0; c < mesh_.nOwnedCells(); ++c) {
+    row_.push_back(mesh_.globalId(c));
+    for (int k = 0; k < 8; ++k) pointRow_.push_back(8 * mesh_.globalId(c) + k);
+  }
   writeMesh();
+}
+
+void FieldWriter::continueSeries(const std::vector<double>& times, const std::vector<std::string>& scalars,
+                                 const std::vector<std::string>& vectors) {
+  PARCELFLOW_ASSERT(snapshots_.empty(), "continueSeries before the first write");
+  for (double t : times) snapshots_.push_back({t, snapshotFile(snapshots_.size()), scalars, vectors});
+}
+
+std::string FieldWriter::snapshotFile(std::size_t index) const {
+  char text[16];
+  std::snprintf(text, sizeof text, "%06zu", index);
+  return name_ + "_" + text + ".h5";
 }
 
 void FieldWriter::writeMesh() {
@@ -84,15 +43,16 @@ void FieldWriter::writeMesh() {
     const Vec3 lo = mesh_.cellCentre(c) - 0.5 * h;
     for (int k = 0; k < 8; ++k) {
       for (int d = 0; d < 3; ++d) points[(8 * c + k) * 3 + d] = lo[d] + corner[k][d] * h[d];
-      cells[8 * c + k] = 8 * (offset_ + c) + k;
+      cells[8 * c + k] = 8 * mesh_.globalId(c) + k;
     }
     ids[c] = mesh_.globalId(c);
   }
   const long total = mesh_.nGlobalCells();
-  H5File file(directory_ + "/" + name_ + "_mesh.h5", mesh_.comm());
-  file.write("points", H5T_NATIVE_DOUBLE, points.data(), 8 * total, 8 * offset_, 8L * n, 3);
-  file.write("cells", H5T_NATIVE_LLONG, cells.data(), total, offset_, n, 8);
-  file.write("global_id", H5T_NATIVE_LLONG, ids.data(), total, offset_, n, 1);
+  Hdf5Writer file(directory_ + "/" + name_ + "_mesh.h5", mesh_.comm());
+  file.writeAt("points", points.data(), 8 * total, pointRow_, 3);
+  file.writeAt("cells", cells.data(), total, row_, 8);
+  file.writeAt("global_id", ids.data(), total, row_, 1);
+  file.close();
 }
 
 void FieldWriter::addScalar(const std::string& name, const ScalarField& field) {
@@ -104,26 +64,25 @@ void FieldWriter::addVector(const std::string& name, const VectorField& field) {
 }
 
 void FieldWriter::write(double time) {
-  char index[16];
-  std::snprintf(index, sizeof index, "%06zu", snapshots_.size());
-  const std::string path = directory_ + "/" + name_ + "_" + index + ".h5";
+  const std::string file_name = snapshotFile(snapshots_.size());
   const int n = mesh_.nOwnedCells();
   const long total = mesh_.nGlobalCells();
-  Snapshot snap{time, baseName(path), {}, {}};
+  Snapshot snap{time, file_name, {}, {}};
   {
-    H5File file(path, mesh_.comm());
+    Hdf5Writer file(directory_ + "/" + file_name, mesh_.comm());
     const double t[1] = {time};
-    file.write("time", H5T_NATIVE_DOUBLE, t, 1, 0, mesh_.rank() == 0 ? 1 : 0, 1);
+    file.write("time", t, 1, 0, mesh_.rank() == 0 ? 1 : 0, 1);
     for (const auto& [name, field] : scalars_) {
-      PARCELFLOW_CFD_ASSERT(static_cast<int>(field->size()) >= n, "short field " + name);
-      file.write(name, H5T_NATIVE_DOUBLE, field->data(), total, offset_, n, 1);
+      PARCELFLOW_ASSERT(static_cast<int>(field->size()) >= n, "short field " + name);
+      file.writeAt(name, field->data(), total, row_, 1);
       snap.scalars.push_back(name);
     }
     for (const auto& [name, field] : vectors_) {
-      PARCELFLOW_CFD_ASSERT(static_cast<int>(field->size()) >= n, "short field " + name);
-      file.write(name, H5T_NATIVE_DOUBLE, (*field)[0].data(), total, offset_, n, 3);
+      PARCELFLOW_ASSERT(static_cast<int>(field->size()) >= n, "short field " + name);
+      file.writeAt(name, (*field)[0].data(), total, row_, 3);
       snap.vectors.push_back(name);
     }
+    file.close();
   }
   scalars_.clear();
   vectors_.clear();
@@ -134,7 +93,10 @@ void FieldWriter::write(double time) {
 void FieldWriter::writeXdmf() const {
   const long n = mesh_.nGlobalCells();
   const std::string meshFile = name_ + "_mesh.h5";
-  std::ofstream x(directory_ + "/" + name_ + ".xdmf");
+  // Written beside and renamed over the old index: an interrupted run keeps a complete XDMF that lists
+  // only snapshots whose files were closed.
+  const std::string path = directory_ + "/" + name_ + ".xdmf", partial = path + ".partial";
+  std::ofstream x(partial);
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
     << "  <Grid Name=\"" << name_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   auto item = [&](const std::string& dims, const char* type, const std::string& where) {
@@ -161,6 +123,9 @@ void FieldWriter::writeXdmf() const {
     x << "   </Grid>\n";
   }
   x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  x.close();
+  if (!x || std::rename(partial.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("cannot write the field index " + path);
 }
 
 }  // namespace parcelflow::cfd

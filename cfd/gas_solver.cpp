@@ -71,7 +71,7 @@ void GasSolver::setupBoundaries() {
       phiB_[b] = patch_[m.boundaryPatch(b)].superficialVelocity.dot(m.boundaryArea(b));
     if (type == BoundaryType::FreeSlipWall) {
       const Vec3 n = m.boundaryArea(b).cwiseAbs() / m.boundaryMagArea(b);
-      PARCELFLOW_CFD_ASSERT(n.maxCoeff() == 1.0, "free-slip walls need axis-aligned faces");
+      PARCELFLOW_ASSERT(n.maxCoeff() == 1.0, "free-slip walls need axis-aligned faces");
     }
   }
 }
@@ -131,7 +131,7 @@ void GasSolver::copyOwned(const Field& in, Field& out, const char* what) const {
 void GasSolver::setGasFraction(const ScalarField& alphaG) {
   copyOwned(alphaG, alpha_, "gas fraction");
   for (int c = 0; c < mesh_->nOwnedCells(); ++c)
-    PARCELFLOW_CFD_ASSERT(alpha_[c] > 0.0 && alpha_[c] <= 1.0,
+    PARCELFLOW_ASSERT(alpha_[c] > 0.0 && alpha_[c] <= 1.0,
                           "gas fraction outside (0, 1]: the coupling floor must prevent this");
   // The first field given is the initial state; later ones are new time levels.
   if (!gasFractionGiven_) alphaOld_ = alpha_;
@@ -152,13 +152,49 @@ void GasSolver::setVelocity(const VectorField& u) {
 }
 
 StepReport GasSolver::advance(double dt) {
-  PARCELFLOW_CFD_ASSERT(dt > 0.0, "time step must be positive");
+  PARCELFLOW_ASSERT(dt > 0.0, "time step must be positive");
   report_ = StepReport{};
   assembleMomentum(dt);
   solveMomentum();
   for (int corr = 0; corr < settings_.solver.pisoCorrectors; ++corr) correctPressure(dt, corr == 0);
   finishStep(dt);
   return report_;
+}
+
+GasSolver::State GasSolver::state() const {
+  const int n = mesh_->nOwnedCells();
+  State s;
+  s.alpha.assign(alpha_.begin(), alpha_.begin() + n);
+  s.pRgh.assign(pRgh_.begin(), pRgh_.begin() + n);
+  s.gradPRgh.assign(gradPrgh_.begin(), gradPrgh_.begin() + n);
+  s.velocity.assign(U_.begin(), U_.begin() + n);
+  s.phi = phi_;
+  s.phiBoundary = phiB_;
+  s.time = time_;
+  return s;
+}
+
+void GasSolver::restore(const State& s) {
+  const Mesh& m = *mesh_;
+  PARCELFLOW_ASSERT(static_cast<int>(s.alpha.size()) == m.nOwnedCells() && s.phi.size() == phi_.size() &&
+                        s.phiBoundary.size() == phiB_.size(),
+                    "restored gas state does not fit the mesh");
+  copyOwned(s.alpha, alpha_, "gas fraction");
+  copyOwned(s.pRgh, pRgh_, "pressure");
+  copyOwned(s.velocity, U_, "velocity");
+  copyOwned(s.gradPRgh, gradPrgh_, "pressure gradient");
+  alphaOld_ = alpha_;
+  Uold_ = U_;
+  gasFractionGiven_ = true;
+  phi_ = s.phi;
+  phiB_ = s.phiBoundary;
+  time_ = s.time;
+  // As at the end of the step.
+  for (int c = 0; c < m.nLocalCells(); ++c) {
+    p_[c] = pRef_ + pRgh_[c] + rho_ * g_.dot(m.cellCentre(c));
+    gradP_[c] = gradPrgh_[c] + rho_ * g_;
+  }
+  pPrecond_.rebuildNextStep();
 }
 
 double GasSolver::patchOutflow(const std::string& patch) const {

@@ -58,6 +58,23 @@ class GasSolver {
   double time() const { return time_; }
   const StepReport& lastReport() const { return report_; }
 
+  // What the next step reads besides the settings (a checkpoint): gas fraction, p_rgh, its gradient (lagged:
+  // the boundary values of p_rgh are extrapolated with the last one) and u of the owned cells, the face
+  // fluxes of all local faces, and the time. The old time levels equal the current ones between steps, so
+  // they are not stored twice.
+  struct State {
+    ScalarField alpha, pRgh;
+    VectorField gradPRgh, velocity;
+    ScalarField phi, phiBoundary;
+    double time = 0.0;
+  };
+  State state() const;
+  // Restores a state (ghosts exchanged at once; p and grad p recomputed as at the end of a step).
+  void restore(const State& state);
+  // The next step builds a new pressure preconditioner instead of reusing the kept one. A checkpoint calls
+  // it, so the run that wrote it and a run restarted from it solve the same way.
+  void rebuildPreconditionerNextStep() { pPrecond_.rebuildNextStep(); }
+
   // Net outward volumetric gas flow (a_g u . S summed) through a named patch, global [m^3/s].
   double patchOutflow(const std::string& patch) const;
   // Gas volume sum a_g V over the mesh [m^3].

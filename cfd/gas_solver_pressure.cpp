@@ -44,7 +44,7 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
     for (int k = 0; k < 3; ++k) {
       const double A = diag[c] + diagExtra_[k][c];
       const double excess = A + rowOffDiag[c];
-      PARCELFLOW_CFD_ASSERT(excess > 0.0, "momentum matrix is not diagonally dominant");
+      PARCELFLOW_ASSERT(excess > 0.0, "momentum matrix is not diagonally dominant");
       HbyA[c][k] = H[c][k] / A;
       D[c][k] = aV / A;
       Dt[c][k] = aV / excess;

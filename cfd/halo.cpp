@@ -10,11 +10,11 @@ namespace {
 constexpr int kHaloTag = 4711;
 }
 
-Halo::Halo(MPI_Comm comm, int nOwned, int nLocal, std::vector<Neighbour> neighbours)
-    : comm_(comm), nOwned_(nOwned), nLocal_(nLocal), neighbours_(std::move(neighbours)) {}
+Halo::Halo(MPI_Comm comm, int nLocal, std::vector<Neighbour> neighbours)
+    : comm_(comm), nLocal_(nLocal), neighbours_(std::move(neighbours)) {}
 
 void Halo::checkSize(std::size_t size) const {
-  PARCELFLOW_CFD_ASSERT(static_cast<int>(size) == nLocal_,
+  PARCELFLOW_ASSERT(static_cast<int>(size) == nLocal_,
                         "halo field has " + std::to_string(size) + " entries, mesh has " +
                             std::to_string(nLocal_) + " local cells");
 }
@@ -49,40 +49,6 @@ void Halo::exchangeRaw(double* data, int width, std::size_t size) const {
       for (int w = 0; w < width; ++w)
         data[static_cast<std::size_t>(nb.recv[i]) * width + w] = recvBuf[n][i * width + w];
   }
-}
-
-void Halo::reverseAddRaw(double* data, int width, std::size_t size) const {
-  checkSize(size);
-  std::vector<std::vector<double>> sendBuf(neighbours_.size()), recvBuf(neighbours_.size());
-  std::vector<MPI_Request> requests;
-  for (std::size_t n = 0; n < neighbours_.size(); ++n) {
-    const auto& nb = neighbours_[n];
-    recvBuf[n].resize(nb.send.size() * width);
-    requests.emplace_back();
-    MPI_Irecv(recvBuf[n].data(), static_cast<int>(recvBuf[n].size()), MPI_DOUBLE, nb.rank,
-              kHaloTag + 1, comm_, &requests.back());
-  }
-  for (std::size_t n = 0; n < neighbours_.size(); ++n) {
-    const auto& nb = neighbours_[n];
-    auto& buf = sendBuf[n];
-    for (int c : nb.recv)
-      for (int w = 0; w < width; ++w) buf.push_back(data[static_cast<std::size_t>(c) * width + w]);
-    requests.emplace_back();
-    MPI_Isend(buf.data(), static_cast<int>(buf.size()), MPI_DOUBLE, nb.rank, kHaloTag + 1, comm_,
-              &requests.back());
-  }
-  if (!requests.empty())
-    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
-  // Neighbours are sorted by rank, so the summation order is fixed.
-  for (std::size_t n = 0; n < neighbours_.size(); ++n) {
-    const auto& nb = neighbours_[n];
-    for (std::size_t i = 0; i < nb.send.size(); ++i)
-      for (int w = 0; w < width; ++w)
-        data[static_cast<std::size_t>(nb.send[i]) * width + w] += recvBuf[n][i * width + w];
-  }
-  for (std::size_t c = static_cast<std::size_t>(nOwned_) * width;
-       c < static_cast<std::size_t>(nLocal_) * width; ++c)
-    data[c] = 0.0;
 }
 
 }  // namespace parcelflow::cfd

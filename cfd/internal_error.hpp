@@ -1,6 +1,7 @@
 #pragma once
-// Internal invariants: a failure is a bug in parcelflow, not a user error, so it is a different
-// exception type (ConfigError is for the user's input).
+// The project's one internal-invariant check: a failure is a bug in parcelflow, not a user error, so it is
+// a different exception type (ConfigError is for the user's input). `parcelflow` reports it as a bug on the
+// rank that found it and stops all ranks.
 #include <stdexcept>
 #include <string>
 
@@ -13,7 +14,7 @@ class InternalError : public std::logic_error {
 
 }  // namespace parcelflow::cfd
 
-#define PARCELFLOW_CFD_ASSERT(cond, msg)                                                         \
+#define PARCELFLOW_ASSERT(cond, msg)                                                             \
   do {                                                                                           \
     if (!(cond))                                                                                 \
       throw ::parcelflow::cfd::InternalError(std::string("internal error: ") + (msg) + " (" +    \

@@ -1,14 +1,12 @@
 #pragma once
-// The local part of the face-based gas mesh on one rank.
+// The local part of the face-based gas mesh on one rank: owned cells first, then ghosts.
 //
-// Interface for the coupling layer:
-//  - background(): the Cartesian background (origin, spacing, n per axis) the fluid cells are cut from;
-//  - localCellOfBackground(i, j, k): local index of the fluid cell (owned or ghost) at background index
-//    (i, j, k), or -1 if that cell is solid, outside the background or not present on this rank;
-//  - nOwnedCells(), nLocalCells() (= owned + ghosts); owned cells come first;
-//  - exchange(field): owners -> ghosts; reverseAdd(field): ghost contributions summed into owners,
-//    ghosts then zeroed. Ghost cells cover `ghostLayers` layers in the 26-neighbourhood (Chebyshev
-//    distance on the background), so a deposition kernel of that half-width stays inside them.
+// Ghosts are the fluid cells within `ghost_layers` background cells (Chebyshev distance) of an owned
+// cell; exchange(field) copies their owners' values into them. The solver's stencils are the faces of
+// owned cells, so it reads only the ghosts sharing a face with an owned cell (their values and their
+// gradients, exchanged from the owners); one layer is enough for it.
+// The coupling layer reads owned cells only: it sends particle contributions to the ranks owning the
+// cells (coupling/exchange), so ghosts need not cover a deposition kernel.
 // Geometry is stored per cell and per face (volumes, centres, area vectors), so cut cells can later
 // replace the staircase cells without changing the solver.
 #include <mpi.h>
@@ -32,6 +30,8 @@ class Mesh {
   int nRanks() const { return nRanks_; }
 
   const CartesianBackground& background() const { return background_; }
+  // Local index of the fluid cell (owned or ghost) at background index (i, j, k); -1 if it is solid,
+  // outside the background or not present on this rank.
   int localCellOfBackground(int i, int j, int k) const {
     return background_.inside(i, j, k) ? backgroundToLocal_[background_.index(i, j, k)] : -1;
   }
@@ -39,12 +39,9 @@ class Mesh {
   int nOwnedCells() const { return nOwned_; }
   int nLocalCells() const { return static_cast<int>(globalId_.size()); }
   long nGlobalCells() const { return nGlobal_; }
-  int ghostLayers() const { return ghostLayers_; }
   // Global fluid-cell id (ordered like the background's linear index), the same on every rank count.
   long globalId(int cell) const { return globalId_[cell]; }
   long backgroundIndex(int cell) const { return backgroundIndex_[cell]; }
-  // 0 for owned cells, 1..ghostLayers for ghosts.
-  int ghostLayer(int cell) const { return ghostLayer_[cell]; }
   const Vec3& cellCentre(int cell) const { return cellCentre_[cell]; }
   double cellVolume(int cell) const { return cellVolume_[cell]; }
 
@@ -73,11 +70,8 @@ class Mesh {
   int patchId(const std::string& name) const;  // -1 when no face of the whole mesh has that name
   long patchGlobalFaces(int patch) const { return patchGlobalFaces_[patch]; }
 
-  const Halo& halo() const { return halo_; }
   void exchange(ScalarField& field) const { halo_.exchange(field); }
   void exchange(VectorField& field) const { halo_.exchange(field); }
-  void reverseAdd(ScalarField& field) const { halo_.reverseAdd(field); }
-  void reverseAdd(VectorField& field) const { halo_.reverseAdd(field); }
 
   // Global sums over owned cells.
   double sumOwned(const ScalarField& field) const;
@@ -93,9 +87,7 @@ class Mesh {
   std::vector<int> backgroundToLocal_;
   int nOwned_ = 0;
   long nGlobal_ = 0;
-  int ghostLayers_ = 0;
   std::vector<long> globalId_, backgroundIndex_;
-  std::vector<int> ghostLayer_;
   std::vector<Vec3> cellCentre_;
   std::vector<double> cellVolume_;
   std::vector<int> faceOwner_, faceNeighbour_;

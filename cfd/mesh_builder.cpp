@@ -65,10 +65,7 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   const std::vector<int> part = Partitioner::partition(comm, xadj, adjncy, weights);
 
   for (int g = 0; g < nGlobal; ++g)
-    if (part[g] == mesh.rank_) {
-      mesh.globalId_.push_back(g);
-      mesh.ghostLayer_.push_back(0);
-    }
+    if (part[g] == mesh.rank_) mesh.globalId_.push_back(g);
   mesh.nOwned_ = static_cast<int>(mesh.globalId_.size());
   const double haveCells = mesh.nOwned_ > 0 ? 1.0 : 0.0;
   double allHave = 0.0;
@@ -94,7 +91,6 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
 void MeshBuilder::addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBackground,
                                  const std::vector<long>& backgroundOfGlobal, int layers) {
   const auto& bg = mesh.background_;
-  mesh.ghostLayers_ = layers;
   int begin = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const int end = mesh.nLocalCells();
@@ -117,7 +113,6 @@ void MeshBuilder::addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBac
     for (int g : added) {
       mesh.backgroundToLocal_[backgroundOfGlobal[g]] = mesh.nLocalCells();
       mesh.globalId_.push_back(g);
-      mesh.ghostLayer_.push_back(layer);
     }
     begin = end;
   }
@@ -154,12 +149,12 @@ void MeshBuilder::buildHalo(Mesh& mesh, const std::vector<int>& part) {
       const auto begin = mesh.globalId_.begin(), end = begin + mesh.nOwned_;
       const auto it = std::lower_bound(begin, end, static_cast<long>(incoming[i]));
       const int local = (it != end && *it == incoming[i]) ? static_cast<int>(it - begin) : -1;
-      PARCELFLOW_CFD_ASSERT(local >= 0 && local < mesh.nOwned_, "halo request for a cell not owned");
+      PARCELFLOW_ASSERT(local >= 0 && local < mesh.nOwned_, "halo request for a cell not owned");
       nb.send.push_back(local);
     }
     neighbours.push_back(std::move(nb));
   }
-  mesh.halo_ = Halo(mesh.comm_, mesh.nOwned_, mesh.nLocalCells(), std::move(neighbours));
+  mesh.halo_ = Halo(mesh.comm_, mesh.nLocalCells(), std::move(neighbours));
 }
 
 void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
@@ -210,7 +205,7 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
           }
         }
         const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
-        PARCELFLOW_CFD_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
+        PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
         mesh.boundaryCell_.push_back(c);
         mesh.boundaryArea_.push_back(s * area * e);
         mesh.boundaryMagArea_.push_back(area);

@@ -31,7 +31,7 @@ std::vector<int> Partitioner::partition(MPI_Comm comm, const std::vector<int>& x
     const int status = METIS_PartGraphKway(&nvtxs, &ncon, x.data(), a.data(), w.data(), nullptr,
                                            nullptr, &nparts, nullptr, nullptr, options, &objval,
                                            p.data());
-    PARCELFLOW_CFD_ASSERT(status == METIS_OK, "METIS_PartGraphKway failed with " +
+    PARCELFLOW_ASSERT(status == METIS_OK, "METIS_PartGraphKway failed with " +
                                                   std::to_string(status));
     part.assign(p.begin(), p.end());
   }

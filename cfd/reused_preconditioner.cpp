@@ -6,7 +6,7 @@ namespace parcelflow::cfd {
 
 ReusedPreconditioner::ReusedPreconditioner(PreconditionerType type, int maxSteps)
     : type_(type), maxSteps_(maxSteps) {
-  PARCELFLOW_CFD_ASSERT(maxSteps >= 1, "a preconditioner must serve at least one step");
+  PARCELFLOW_ASSERT(maxSteps >= 1, "a preconditioner must serve at least one step");
 }
 
 std::shared_ptr<const Preconditioner> ReusedPreconditioner::forStep(const LduMatrix& matrix) {

@@ -25,6 +25,8 @@ class ReusedPreconditioner {
   std::shared_ptr<const Preconditioner> forStep(const LduMatrix& matrix);
   // The PCG iterations of this step's first solve with it.
   void recordIterations(int iterations);
+  // The next forStep builds a new one.
+  void rebuildNextStep() { precond_.reset(); }
   // Whether the last forStep built a new one.
   bool builtThisStep() const { return age_ == 1; }
 

@@ -1,8 +1,10 @@
 #include "fix_parcel_implicit_drag.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "modify.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -61,6 +63,44 @@ void FixParcelImplicitDrag::halfStep(bool move)
       for (int k = 0; k < 3; ++k) x[i][k] += dtv_ * v[i][k];
     const double h_over_inertia = dtf_ / (kSphereInertia * radius[i] * radius[i] * rmass[i]);
     for (int k = 0; k < 3; ++k) omega[i][k] += h_over_inertia * torque[i][k];
+  }
+}
+
+void FixParcelImplicitDrag::keepForcesForRestart()
+{
+  for (int i = 0; i < atom->nlocal; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      data_[i][KEPT_FX + k] = atom->f[i][k];
+      data_[i][KEPT_TX + k] = atom->torque[i][k];
+    }
+    data_[i][FORCES_KEPT] = 1.0;
+  }
+}
+
+void FixParcelImplicitDrag::setup(int)
+{
+  int kept = 0;
+  for (int i = 0; i < atom->nlocal; ++i) kept = kept || data_[i][FORCES_KEPT] != 0.0;
+  int any_kept = 0;
+  MPI_Allreduce(&kept, &any_kept, 1, MPI_INT, MPI_MAX, world);
+  if (!any_kept) return;
+  // A fix after this one that adds forces in its setup would add them a second time on top of the kept
+  // forces: then the restart keeps LIGGGHTS' recomputed forces (and is not exact).
+  const int me = modify->find_fix(id);
+  for (int j = me + 1; j < modify->nfix; ++j)
+    if (modify->fmask[j] & POST_FORCE) {
+      if (comm->me == 0)
+        error->warning(FLERR, "fix parcel/implicit_drag: a force fix is defined after it; the restart recomputes "
+                              "the first step's forces instead of using the kept ones (not exact)");
+      any_kept = 0;
+    }
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (any_kept && data_[i][FORCES_KEPT] != 0.0)
+      for (int k = 0; k < 3; ++k) {
+        atom->f[i][k] = data_[i][KEPT_FX + k];
+        atom->torque[i][k] = data_[i][KEPT_TX + k];
+      }
+    data_[i][FORCES_KEPT] = 0.0;
   }
 }
 

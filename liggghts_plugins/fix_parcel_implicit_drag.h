@@ -8,6 +8,13 @@
 // implicit in the drag: stable for any kappa dt/m, so fines whose response time is shorter than the DEM
 // step stay stable, and the steady state is exactly v = u_f + (f + f_p)/kappa. Rotation as nve/sphere.
 // Per-atom output (dump f_ID[1..7]): kappa, u_f (3), f_p (3).
+//
+// Exact restarts: `run N pre no` starts a chunk from the forces of the previous chunk's last step, which were
+// computed with the half-step velocities; the setup of the first run after read_restart would recompute them
+// from the full-step ones (LIGGGHTS' read_restart documentation: granular pair styles "will not restart
+// exactly"). keepForcesForRestart() copies f and torque into columns 8-14 just before write_restart, and
+// setup() of the next run puts them back (in the restarted run and in the run that wrote the file, which
+// must set up again after write_restart), so both take the same next step.
 #pragma once
 
 #include "per_atom_columns_fix.h"
@@ -16,7 +23,8 @@ namespace parcelflow::plugins {
 
 class FixParcelImplicitDrag : public PerAtomColumnsFix {
  public:
-  enum Column { KAPPA = 0, UFX, UFY, UFZ, FPX, FPY, FPZ, NCOLUMNS };
+  enum Column { KAPPA = 0, UFX, UFY, UFZ, FPX, FPY, FPZ, KEPT_FX, KEPT_FY, KEPT_FZ, KEPT_TX, KEPT_TY, KEPT_TZ,
+                FORCES_KEPT, NCOLUMNS };
 
   FixParcelImplicitDrag(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
 
@@ -25,6 +33,10 @@ class FixParcelImplicitDrag : public PerAtomColumnsFix {
   void initial_integrate(int vflag) override;
   void final_integrate() override;
   void reset_dt() override;
+  void setup(int vflag) override;
+
+  // Copies f and torque into the kept columns (right before write_restart); the next setup puts them back.
+  void keepForcesForRestart();
 
   void set_arrays(int i) override;  // new atoms feel no gas until the coupling sets their columns
 

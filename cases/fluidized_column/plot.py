@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of a fluidized_column run: bed pressure drop against the bed weight per area, and the bed's
 mean height, over time. Usage: plot.py [OUTPUT_FOLDER] (default: output next to this file)."""
 import csv

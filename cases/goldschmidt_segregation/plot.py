@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots of a goldschmidt_segregation run: the mean height of each size class against time (the measure
 Goldschmidt used), the bed pressure drop against the bed weight, and solids-fraction snapshots from the
 HDF5 fields. Prints the segregation summary over the last half of the run (or the last 10 s if longer).

@@ -47,7 +47,8 @@ CommandLine parseRun(const std::vector<std::string>& args) {
   CommandLine cl;
   cl.action = CommandLine::Action::run;
   if (args.size() < 2 || args[1].empty() || args[1][0] == '-')
-    throw UsageError("'parcelflow run' needs a case folder: parcelflow run CASE [--output DIR] [--end SECONDS]");
+    throw UsageError("'parcelflow run' needs a case folder: parcelflow run CASE [--output DIR] [--end SECONDS] "
+                     "[--restart CHECKPOINT]");
   cl.case_folder = args[1];
   for (std::size_t i = 2; i < args.size(); i += 2) {
     const std::string& opt = args[i];
@@ -57,8 +58,12 @@ CommandLine parseRun(const std::vector<std::string>& args) {
     } else if (opt == "--end") {
       if (i + 1 >= args.size()) throw UsageError("option '--end' needs a time: --end SECONDS");
       cl.end_time = parseEndTime(args[i + 1]);
+    } else if (opt == "--restart") {
+      if (i + 1 >= args.size()) throw UsageError("option '--restart' needs a checkpoint folder: --restart CHECKPOINT");
+      cl.restart = args[i + 1];
     } else {
-      throw UsageError("unknown option '" + opt + "' for 'parcelflow run'; allowed: --output DIR, --end SECONDS");
+      throw UsageError("unknown option '" + opt +
+                       "' for 'parcelflow run'; allowed: --output DIR, --end SECONDS, --restart CHECKPOINT");
     }
   }
   return cl;
@@ -85,7 +90,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args) {
 }
 
 std::string usageText() {
-  return "usage: parcelflow run CASE [--output DIR] [--end SECONDS]\n"
+  return "usage: parcelflow run CASE [--output DIR] [--end SECONDS] [--restart CHECKPOINT]\n"
          "       parcelflow dem SCRIPT [-var NAME VALUE]... [-log FILE]\n"
          "       parcelflow --help | --version\n"
          "\n"
@@ -93,6 +98,9 @@ std::string usageText() {
          "               mpirun -np N parcelflow run CASE for N ranks. Output goes to DIR, by default\n"
          "               CASE/<output.folder of case.yaml>: monitors.csv, log.liggghts, fields.\n"
          "               --end SECONDS replaces time.end of case.yaml (a shorter or longer run).\n"
+         "               --restart CHECKPOINT continues a run from a checkpoint folder\n"
+         "               (DIR/checkpoints/step_<N>, written at output.checkpoint_interval and when\n"
+         "               SIGTERM or SIGINT stops a run).\n"
          "  dem SCRIPT   run a LIGGGHTS input script in-process with parcelflow's parcel styles\n"
          "               registered (any number of MPI ranks: mpirun -np N parcelflow dem SCRIPT).\n"
          "               -var NAME VALUE defines a LIGGGHTS index variable, as for `liggghts -var`;\n"

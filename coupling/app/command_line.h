@@ -1,4 +1,4 @@
-// The parcelflow command line: `parcelflow run CASE [--output DIR] [--end SECONDS]`, `parcelflow dem SCRIPT
+// The parcelflow command line: `parcelflow run CASE [--output DIR] [--end SECONDS] [--restart CHECKPOINT]`, `parcelflow dem SCRIPT
 // [-var NAME VALUE]... [-log FILE]`, `--help`, `--version`.
 // Parsing is separate from running so that every malformed line is rejected (exit code 2) before MPI
 // work or LIGGGHTS starts, and so that it can be unit-tested.
@@ -25,6 +25,7 @@ struct CommandLine {
   std::string case_folder;                                 // run: the case folder
   std::string output_folder;                               // run: --output DIR (default CASE/output)
   double end_time = 0.0;                                   // run: --end SECONDS (0: time.end of case.yaml)
+  std::string restart;                                     // run: --restart CHECKPOINT (a checkpoint folder)
 };
 
 // Throws UsageError naming the offending argument and what is allowed.

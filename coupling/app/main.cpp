@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cfd/config_error.hpp"
+#include "cfd/internal_error.hpp"
 #include "command_line.h"
 #include "coupled_run.h"
 #include "liggghts_instance.h"
@@ -28,19 +29,37 @@ int runDem(const pc::CommandLine& cl) {
   return 0;
 }
 
-// Case errors (cfd::ConfigError) are found by every rank alike, before any work: rank 0 reports.
+// User errors (cfd::ConfigError) are found by every rank alike, before any work: rank 0 reports them and
+// the run exits with code 2. An internal error is a bug: the rank that found it says so and stops all ranks.
+// Any other failure (a file that cannot be written) stops all ranks with its message.
 int runCase(const pc::CommandLine& cl) {
-  int rank = 0;
+  int rank = 0, ranks = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   try {
-    pc::CoupledRun run({cl.case_folder, cl.output_folder, cl.end_time});
+    pc::CoupledRun run({cl.case_folder, cl.output_folder, cl.end_time, cl.restart});
     run.initialize();
     while (run.advance()) {
+    }
+    if (run.stopSignal()) {
+      if (rank == 0)
+        std::cerr << "parcelflow: stopped by signal " << run.stopSignal() << " after a checkpoint; continue with\n"
+                  << "  mpirun -np " << ranks << " parcelflow run " << cl.case_folder
+                  << (cl.output_folder.empty() ? "" : " --output " + cl.output_folder) << " --restart "
+                  << run.lastCheckpoint() << "\n";
+      return 128 + run.stopSignal();
     }
     run.finalize();
   } catch (const parcelflow::cfd::ConfigError& e) {
     if (rank == 0) std::cerr << "parcelflow: error in case '" << cl.case_folder << "': " << e.what() << "\n";
     return 2;
+  } catch (const parcelflow::cfd::InternalError& e) {
+    std::cerr << "parcelflow: rank " << rank << ": " << e.what()
+              << "\nparcelflow: this is a bug in parcelflow, not in your case; please report it with the case\n";
+    MPI_Abort(MPI_COMM_WORLD, 70);
+  } catch (const std::exception& e) {
+    std::cerr << "parcelflow: rank " << rank << ": " << e.what() << "\n";
+    MPI_Abort(MPI_COMM_WORLD, 1);
   }
   return 0;
 }
@@ -72,7 +91,9 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  pc::LiggghtsInstance::installSignalHandlers();
+  // `parcelflow dem` stops on a signal as the stock `liggghts` binary does; a coupled run installs its own
+  // handlers (run/stop_signal.h).
+  if (cl.action == pc::CommandLine::Action::dem) pc::LiggghtsInstance::installSignalHandlers();
   MPI_Init(&argc, &argv);
   const int status = cl.action == pc::CommandLine::Action::run ? runCase(cl) : runDem(cl);
   MPI_Finalize();

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "cfd/internal_error.hpp"
+
 namespace parcelflow::coupling {
 namespace {
 
@@ -22,8 +24,7 @@ std::vector<Entry> buildRegistry(std::index_sequence<I...>) {
       Entry{std::variant_alternative_t<I, DragLaw>::typeName, &makeAlternative<I>}...};
   for (std::size_t a = 0; a < entries.size(); ++a)
     for (std::size_t b = a + 1; b < entries.size(); ++b)
-      if (entries[a].name == entries[b].name)
-        throw std::logic_error("drag law registry: duplicate name '" + entries[a].name + "'");
+      PARCELFLOW_ASSERT(entries[a].name != entries[b].name, "drag law registry: duplicate name '" + entries[a].name + "'");
   return entries;
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "cfd/internal_error.hpp"
+
 namespace parcelflow::coupling {
 
 namespace {
@@ -26,7 +28,7 @@ CellExchange::Routing CellExchange::route(const std::vector<long>& cells) const 
   r.send_counts.assign(nranks, 0);
   for (long cell : cells) {
     const int owner = owners_.ownerRank(cell);
-    if (owner < 0) throw std::logic_error("CellExchange: background cell " + std::to_string(cell) + " is not fluid");
+    PARCELFLOW_ASSERT(owner >= 0, "CellExchange: background cell " + std::to_string(cell) + " is not fluid");
     ++r.send_counts[owner];
   }
   r.send_offsets.assign(nranks, 0);

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "cfd/internal_error.hpp"
+
 namespace parcelflow::coupling {
 
 CellOwnerMap::CellOwnerMap(MPI_Comm comm, long background_size, const std::vector<long>& owned_background_cells)
@@ -20,9 +22,8 @@ CellOwnerMap::CellOwnerMap(MPI_Comm comm, long background_size, const std::vecto
   for (int rank = 0; rank < nranks; ++rank) {
     for (int c = 0; c < counts[rank]; ++c) {
       const long cell = all[offsets[rank] + c];
-      if (cell < 0 || cell >= background_size || owner_rank_[cell] != -1)
-        throw std::logic_error("CellOwnerMap: background cell " + std::to_string(cell) +
-                               " is out of range or owned twice");
+      PARCELFLOW_ASSERT(cell >= 0 && cell < background_size && owner_rank_[cell] == -1,
+                        "CellOwnerMap: background cell " + std::to_string(cell) + " is out of range or owned twice");
       owner_rank_[cell] = rank;
       owner_index_[cell] = c;
     }

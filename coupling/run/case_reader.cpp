@@ -49,19 +49,25 @@ CouplingSettings readCoupling(const YamlSection& s) {
   c.gas_fraction_floor = s.number("gas_fraction_floor", c.gas_fraction_floor, Range{0.0, 1.0, true, true});
   if (s.has("kernel")) {
     const YamlSection k = s.map("kernel");
-    k.allowOnly({"type", "width", "radius"});
+    if (k.has("width"))
+      k.fail("width", "was renamed to coupling.kernel.sharpness: it is the a of exp(-a |dx|^2/h^2) (paper eq. 8), "
+                      "so a larger value makes the kernel narrower, not wider");
+    k.allowOnly({"type", "sharpness", "radius"});
     c.kernel.type = k.word("type", c.kernel.type, {"gaussian", "centroid"});
-    c.kernel.width = k.number("width", c.kernel.width, Range::positive());
+    c.kernel.sharpness = k.number("sharpness", c.kernel.sharpness, Range::positive());
     c.kernel.radius = k.integer("radius", c.kernel.radius, 1, 4);
   }
   return c;
 }
 
 OutputSettings readOutput(const YamlSection& s) {
-  s.allowOnly({"folder", "fields_interval", "monitor_interval", "progress_interval"});
+  s.allowOnly({"folder", "fields_interval", "parcels_interval", "checkpoint_interval", "monitor_interval",
+               "progress_interval"});
   OutputSettings o;
   o.folder = s.text("folder", o.folder);
   o.fields_interval = s.number("fields_interval", o.fields_interval, Range::nonNegative());
+  o.parcels_interval = s.number("parcels_interval", o.parcels_interval, Range::nonNegative());
+  o.checkpoint_interval = s.number("checkpoint_interval", o.checkpoint_interval, Range::nonNegative());
   o.monitor_interval = s.number("monitor_interval", o.monitor_interval, Range::positive());
   o.progress_interval = s.number("progress_interval", o.progress_interval, Range::positive());
   return o;

@@ -9,12 +9,12 @@
 //   3. gas advances to t + dt with a_g = max(1 - a_s, floor) (floor hits counted), beta, beta u_s;
 //   4. gas velocity and pressure gradient at t + dt gathered at the parcels;
 //   5. LIGGGHTS advances its DEM substeps with kappa, u_f and -np V_p grad p held fixed (implicit drag).
+// Then the outputs that are due (monitors, fields, parcels, checkpoint), and a stop signal on any rank ends
+// the loop after a checkpoint.
 #pragma once
 
 #include <memory>
 #include <string>
-
-#include "case_reader.h"
 
 namespace parcelflow::coupling {
 
@@ -22,6 +22,7 @@ struct RunOptions {
   std::string case_folder;
   std::string output_folder;  // default: CASE/output
   double end_time = 0.0;      // > 0 replaces time.end of case.yaml
+  std::string restart;        // a checkpoint folder to continue from (empty: a fresh start)
 };
 
 class CoupledRun {
@@ -30,8 +31,13 @@ class CoupledRun {
   ~CoupledRun();
 
   void initialize();
-  bool advance();  // false once the end time is reached
+  bool advance();  // false once the end time is reached or a stop signal was handled
   void finalize();
+
+  // After advance() returned false: the signal that stopped the run (0: it reached its end) and the
+  // checkpoint written then.
+  int stopSignal() const;
+  std::string lastCheckpoint() const;
 
   struct State;
 

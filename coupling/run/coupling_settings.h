@@ -24,7 +24,7 @@ struct TimeSettings {
 
 struct KernelSettings {
   std::string type = "gaussian";  // gaussian | centroid
-  double width = 1.0;             // a in exp(-a |dx|^2 / h^2)
+  double sharpness = 1.0;         // a in exp(-a |dx|^2 / h^2) (paper eq. 8): larger is narrower
   int radius = 2;                 // stencil half-width in cells
 };
 
@@ -36,7 +36,9 @@ struct CouplingSettings {
 
 struct OutputSettings {
   std::string folder = "output";
-  double fields_interval = 0.0;    // s of simulated time between HDF5 field/parcel writes (0: only at end)
+  double fields_interval = 0.0;    // s of simulated time between HDF5 field writes (0: only at the end)
+  double parcels_interval = 0.0;   // s between HDF5 parcel writes (0: none)
+  double checkpoint_interval = 0.0;  // s between checkpoints (0: only when stopped by a signal)
   double monitor_interval = 0.01;  // s between monitor rows
   double progress_interval = 5.0;  // s of wall time between progress lines
 };

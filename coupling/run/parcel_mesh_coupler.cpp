@@ -100,7 +100,7 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
   const std::size_t n = parcels_.size;
   // a_g, u and, for BVK, the two moments of depositSolids.
   const int width = uses_mean_diameter_ ? 6 : 4;
-  PARCELFLOW_CFD_ASSERT(!uses_mean_diameter_ || owned_moments_.size() == 2 * static_cast<std::size_t>(n_owned_),
+  PARCELFLOW_ASSERT(!uses_mean_diameter_ || owned_moments_.size() == 2 * static_cast<std::size_t>(n_owned_),
                         "computeDrag needs this step's depositSolids for the Sauter mean");
   std::vector<double> owned(static_cast<std::size_t>(n_owned_) * width);
   for (int c = 0; c < n_owned_; ++c) {

@@ -1,9 +1,8 @@
 #pragma once
 // The Cartesian background the gas mesh is built on: origin, uniform spacing per axis, cell counts.
 // Background cell (i, j, k) spans [o + i h, o + (i+1) h) per axis; its centre is o + (i + 1/2) h.
-// Which background cells are fluid, and where they live on this rank, is answered by the gas solver's
-// `int localCellOfBackground(int i, int j, int k) const` (local index of an owned or ghost fluid
-// cell, or -1), passed to the kernels as any callable `int(int, int, int)`.
+// Which cells are fluid is the caller's answer (FluidCells in box_stencils.hpp; the coupler counts a
+// cell as fluid when some rank owns it), so the weights do not depend on the partition.
 #include <array>
 
 namespace parcelflow::coupling {

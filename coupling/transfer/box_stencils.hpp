@@ -9,7 +9,7 @@
 // so each window row is contiguous: no per-cell index is stored or looked up (a Gaussian R = 2 stencil
 // is 27 factors instead of 125 (cell, weight) pairs). Non-fluid box cells: a deposit there is
 // discarded and a gather must read 0 there; the weights over the fluid cells sum to 1, so volume and
-// momentum are conserved exactly, as with the expanded stencils of particle_mesh_transfer.hpp.
+// momentum are conserved exactly.
 #include <array>
 #include <cstddef>
 #include <limits>

@@ -1,8 +1,8 @@
 #pragma once
 // Cell-centroid ("particle source in cell") kernel: all of a parcel's weight goes to the background
-// cell containing it. If that cell is not active on this rank (a parcel overlapping a wall, or outside
-// the box), the nearest active cell (by distance to its centre) within +-searchRadius cells is used
-// and the parcel is counted as a fallback; if there is none it is an orphan (counted and listed).
+// cell containing it. If that cell is not fluid (a parcel overlapping a wall, or outside the box), the
+// nearest fluid cell (by distance to its centre) within +-searchRadius cells is used and the parcel is
+// counted as a fallback; if there is none it is an orphan (counted and listed).
 // Reference: MFIX-Exa "centroid" deposition scheme; Crowe et al., PSI-CELL, J. Fluids Eng. 99 (1977).
 #include <cmath>
 
@@ -64,13 +64,6 @@ class CentroidKernel {
     if (bestCell[0] < 0) return StencilResult::orphan;
     setCell(bestCell, w);
     return StencilResult::fallback;
-  }
-
-  template <class LocalCell>
-  StencilResult stencil(const BackgroundGrid& g, const double* x, LocalCell& localCell, Stencil& s) const {
-    Window w;
-    const auto isFluid = [&](int i, int j, int k) { return localCell(i, j, k) >= 0; };
-    return expandWindow(w, window(g, x, isFluid, w), localCell, s);
   }
 
  private:

@@ -5,9 +5,9 @@
 //   w ~ exp(-a |x_cell - x_p|^2 / h^2),  a = 1 by default.
 // On the Cartesian background the kernel is separable: w = fx fy fz with fx = exp(-a dx^2 / hx^2)
 // (h per axis). It is truncated to +-R cells per axis around the cell containing the parcel (R = 2 by
-// default, at most 4) and renormalised over the ACTIVE cells of that stencil (those the lookup maps to
-// a local index), so sum w = 1 exactly: volume and momentum are conserved also next to walls. The
-// prefactor (a/pi)^1.5 of eq. 8 cancels in the renormalisation.
+// default, at most 4); the box stencils renormalise it over the fluid cells of that window, so sum w = 1
+// exactly: volume and momentum are conserved also next to walls. The prefactor (a/pi)^1.5 of eq. 8
+// cancels in the renormalisation.
 #include <cmath>
 
 #include "background_grid.hpp"
@@ -33,7 +33,8 @@ class GaussianKernel {
   static double retainedMassFraction1D(double sharpness, int radius, double offset);
 
   // The window of a parcel at x: +-R cells around its cell, clipped to the background (fluid or not:
-  // the renormalisation over fluid cells is the caller's); orphan beyond R cells outside the box.
+  // the renormalisation over fluid cells is the caller's, so isFluid is not read); orphan beyond R cells
+  // outside the box.
   template <class IsFluid>
   StencilResult window(const BackgroundGrid& g, const double* x, const IsFluid&, Window& w) const {
     for (int d = 0; d < 3; ++d) {
@@ -62,12 +63,6 @@ class GaussianKernel {
       for (int i = lo; i <= hi; ++i) w.f[d][i - lo] = f[i - ic + r_];
     }
     return StencilResult::ok;
-  }
-
-  template <class LocalCell>
-  StencilResult stencil(const BackgroundGrid& g, const double* x, LocalCell& localCell, Stencil& s) const {
-    Window w;
-    return expandWindow(w, window(g, x, localCell, w), localCell, s);
   }
 
  private:

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Benchmark: cases/openfoam_dpmfoam_goldschmidt in parcelflow and, where OpenFOAM is installed, the same bed
 in DPMFoam (its tutorial lagrangian/DPMFoam/Goldschmidt), for the same simulated time from t = 0.
 

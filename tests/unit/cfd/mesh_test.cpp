@@ -1,5 +1,5 @@
 // Mesh, geometry, METIS partition and halo: counts, geometry closure, background lookup, ghost
-// depth, forward exchange and reverse ghost sum, on 1, 2 and 3 ranks.
+// depth and the halo exchange, on 1, 2 and 3 ranks.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -61,8 +61,16 @@ TEST(Mesh, BackgroundLookupAndGhostDepth) {
     for (int c = 0; c < m.nLocalCells(); ++c) {
       const auto ijk = bg.ijk(m.backgroundIndex(c));
       EXPECT_EQ(m.localCellOfBackground(ijk[0], ijk[1], ijk[2]), c);
-      EXPECT_LE(m.ghostLayer(c), layers);
-      EXPECT_EQ(m.ghostLayer(c) == 0, c < m.nOwnedCells());
+      if (c < m.nOwnedCells()) continue;
+      // A ghost lies within `layers` (Chebyshev distance) of an owned cell.
+      bool nearOwned = false;
+      for (int dk = -layers; dk <= layers; ++dk)
+        for (int dj = -layers; dj <= layers; ++dj)
+          for (int di = -layers; di <= layers; ++di) {
+            const int n = m.localCellOfBackground(ijk[0] + di, ijk[1] + dj, ijk[2] + dk);
+            nearOwned = nearOwned || (n >= 0 && n < m.nOwnedCells());
+          }
+      EXPECT_TRUE(nearOwned) << "ghost " << c << " with " << layers << " layers";
     }
     EXPECT_EQ(m.localCellOfBackground(0, 0, 0), -1);   // solid corner
     EXPECT_EQ(m.localCellOfBackground(-1, 5, 5), -1);  // outside the background
@@ -83,7 +91,7 @@ TEST(Mesh, BackgroundLookupAndGhostDepth) {
   }
 }
 
-TEST(Mesh, HaloExchangeAndReverseAdd) {
+TEST(Mesh, HaloExchange) {
   const Mesh m = MeshBuilder::build(columnMesh(2), columnGeometry(), MPI_COMM_WORLD);
   ScalarField f(m.nLocalCells(), -1.0);
   VectorField v(m.nLocalCells(), Vec3::Zero());
@@ -97,19 +105,6 @@ TEST(Mesh, HaloExchangeAndReverseAdd) {
     EXPECT_EQ(f[c], static_cast<double>(m.globalId(c)));
     EXPECT_EQ(v[c], m.cellCentre(c));
   }
-  // Reverse: every ghost copy deposits 1 into its owner; the total is conserved, ghosts end at 0.
-  ScalarField d(m.nLocalCells(), 0.0);
-  for (int c = m.nOwnedCells(); c < m.nLocalCells(); ++c) d[c] = 1.0;
-  const double ghosts = m.sum(m.nLocalCells() - m.nOwnedCells());
-  m.reverseAdd(d);
-  EXPECT_DOUBLE_EQ(m.sumOwned(d), ghosts);
-  for (int c = m.nOwnedCells(); c < m.nLocalCells(); ++c) EXPECT_EQ(d[c], 0.0);
-  VectorField dv(m.nLocalCells(), Vec3::Zero());
-  for (int c = m.nOwnedCells(); c < m.nLocalCells(); ++c) dv[c] = Vec3(1, 2, 3);
-  m.reverseAdd(dv);
-  double sz = 0;
-  for (int c = 0; c < m.nOwnedCells(); ++c) sz += dv[c][2];
-  EXPECT_DOUBLE_EQ(m.sum(sz), 3 * ghosts);
 }
 
 TEST(Mesh, PartitionWeightsShiftTheBalance) {

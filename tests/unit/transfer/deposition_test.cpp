@@ -1,7 +1,6 @@
 // Deposition and gather: conservation of particle volume and momentum (kappa v) for many random
-// parcels on an L-shaped mask, the same results (to round-off) from the on-the-fly stencils and the
-// cached box stencils the coupler uses, and action = -reaction of the drag force between parcels and
-// gas cells.
+// parcels on an L-shaped mask, the same results (to round-off) from the ghost-deposition oracle and the
+// box stencils the coupler uses, and action = -reaction of the drag force between parcels and gas cells.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,12 +8,11 @@
 #include <random>
 
 #include "box_stencils.hpp"
-#include "particle_mesh_transfer.hpp"
+#include "ghost_deposition_oracle.hpp"
 #include "test_grid.hpp"
 
 using namespace parcelflow::coupling;
-using parcelflow::coupling::test::makeGrid;
-using parcelflow::coupling::test::MaskedGrid;
+using namespace parcelflow::coupling::test;
 
 namespace {
 
@@ -173,7 +171,7 @@ TEST(Deposition, DragActionEqualsMinusReaction) {
     }
     std::printf("[measured] %s: |sum F_gas + sum F_parcels| / sum |F_parcel| = %.2e\n", name(k), worst);
 
-    // the on-the-fly gather gives the same parcel velocities as the box stencils, to round-off
+    // the oracle's gather gives the same parcel velocities as the box stencils, to round-off
     std::vector<double> uP2(3 * n);
     gatherToParcels(k, g.grid, g, n, p.pos.data(), 3, uCell.data(), uP2.data());
     EXPECT_LE(relativeDifference(uP, uP2), 1e-14);

@@ -9,12 +9,12 @@
 #include <random>
 #include <set>
 
-#include "particle_mesh_transfer.hpp"
+#include "ghost_deposition_oracle.hpp"
 #include "test_grid.hpp"
+#include "transfer_kernel.hpp"
 
 using namespace parcelflow::coupling;
-using parcelflow::coupling::test::makeGrid;
-using parcelflow::coupling::test::MaskedGrid;
+using namespace parcelflow::coupling::test;
 
 namespace {
 
@@ -31,7 +31,7 @@ std::string describe(const TransferKernel& k) {
 
 // Random active positions plus hand-picked ones on the outer walls, the box corner and the inside corner.
 std::vector<double> testPositions(const MaskedGrid& g) {
-  std::vector<double> pos = test::randomActivePositions(g, 20000, 11);
+  std::vector<double> pos = randomActivePositions(g, 20000, 11);
   const auto& G = g.grid;
   const double x0 = G.origin[0], y0 = G.origin[1], z0 = G.origin[2];
   const double xc = x0 + 6 * G.spacing[0], yc = y0 + 5 * G.spacing[1];  // inside corner edge
@@ -90,7 +90,7 @@ TEST(KernelWeights, GaussianAtCellCentreIsSymmetricAndEqualsAnalyticSeparableFor
   for (double a : {1.0, 0.7}) {
     const GaussianKernel k(a, 2);
     Stencil s;
-    ASSERT_EQ(k.stencil(g.grid, x, g, s), StencilResult::ok);
+    ASSERT_EQ(stencilOf(k, g.grid, x, g, s), StencilResult::ok);
     ASSERT_EQ(s.size, 125);
     double z = 0.0;
     for (int m = -2; m <= 2; ++m) z += std::exp(-a * m * m);
@@ -124,7 +124,7 @@ TEST(KernelWeights, GaussianOffCentreUsesCellUnitsPerAxis) {
   for (int d = 0; d < 3; ++d)
     for (int m = -2; m <= 2; ++m) z[d] += std::exp(-a * (m - t[d]) * (m - t[d]));
   Stencil s;
-  ASSERT_EQ(GaussianKernel(a, 2).stencil(g.grid, x, g, s), StencilResult::ok);
+  ASSERT_EQ(stencilOf(GaussianKernel(a, 2), g.grid, x, g, s), StencilResult::ok);
   ASSERT_EQ(s.size, 125);
   for (int e = 0; e < s.size; ++e) {
     double w = 1.0;
@@ -231,7 +231,7 @@ TEST(KernelWeights, OrphansAndFallbacksAreCountedAndListed) {
   }
   // the centroid fallback goes to the nearest active cell
   Stencil s;
-  ASSERT_EQ(CentroidKernel(1).stencil(g.grid, pts[2].data(), g, s), StencilResult::fallback);
+  ASSERT_EQ(stencilOf(CentroidKernel(1), g.grid, pts[2].data(), g, s), StencilResult::fallback);
   const auto ijk = g.ijkOf[s.cell[0]];
   double best = 1e300;
   for (int i = 5; i <= 7; ++i)

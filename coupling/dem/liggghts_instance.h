@@ -1,6 +1,7 @@
 // Owns one in-process LIGGGHTS instance on its own duplicate of a communicator, with parcelflow's
-// styles registered (see liggghts_post_create_hook.cpp), and installs LIGGGHTS' own signal handlers so
-// that Ctrl-C or a scheduler's SIGTERM stops a run the way the stock `liggghts` binary does.
+// styles registered (see liggghts_post_create_hook.cpp). For `parcelflow dem` it installs LIGGGHTS' own
+// signal handlers, so that Ctrl-C or a scheduler's SIGTERM stops it the way the stock `liggghts` binary does
+// (a coupled run owns those signals itself: run/stop_signal.h).
 #pragma once
 
 #include <mpi.h>

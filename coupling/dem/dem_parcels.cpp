@@ -50,9 +50,12 @@ ParcelBatch DemParcels::read() {
   v_.assign(atom->v[0], atom->v[0] + 3 * n);
   dp_.resize(n);
   np_.resize(n);
+  type_.assign(atom->type, atom->type + n);
+  id_.resize(n);
   for (int i = 0; i < n; ++i) {
     dp_[i] = parcel_->dp(i);
     np_[i] = parcel_->np(i);
+    id_[i] = static_cast<long>(atom->tag[i]);
   }
   return {static_cast<std::size_t>(n), x_.data(), v_.data(), dp_.data(), np_.data()};
 }
@@ -69,6 +72,8 @@ void DemParcels::write(const GasAtParcels& gas) {
     }
   }
 }
+
+void DemParcels::keepForcesForRestart() { drag_->keepForcesForRestart(); }
 
 long DemParcels::globalCount() const { return static_cast<long>(lmp_->atom->natoms); }
 

@@ -22,6 +22,11 @@ class DemParcels {
   ParcelBatch read();
   // Sets kappa, u_f and the pressure force -np V_p grad p of the parcels of the last read().
   void write(const GasAtParcels& gas);
+  // Atom types and ids of the parcels of the last read() (for parcel output).
+  const std::vector<int>& types() const { return type_; }
+  const std::vector<long>& ids() const { return id_; }
+  // The forces the next DEM step starts from go into the next restart file and back at the next setup.
+  void keepForcesForRestart();
 
   long globalCount() const;
   int ntypes() const;
@@ -36,6 +41,8 @@ class DemParcels {
   plugins::FixParcel* parcel_ = nullptr;
   plugins::FixParcelImplicitDrag* drag_ = nullptr;
   std::vector<double> x_, v_, dp_, np_;
+  std::vector<int> type_;
+  std::vector<long> id_;
 };
 
 }  // namespace parcelflow::coupling

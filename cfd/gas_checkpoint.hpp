@@ -1,0 +1,20 @@
+#pragma once
+// The gas part of a checkpoint: GasSolver::State in one HDF5 file, keyed by global ids so that it can be
+// read back on any number of ranks. Cells: /cell_id, /alpha, /p_rgh, /velocity. Internal faces:
+// /face_cells (the global ids of owner and neighbour, owner < neighbour) and /phi, written by the rank that
+// owns the owner cell. Boundary faces: /boundary_key (global cell id, outward axis direction 0..5) and /phi_b.
+// Root attributes: checkpoint_id, time, global_cells.
+#include <string>
+
+#include "gas_solver.hpp"
+
+namespace parcelflow::cfd {
+
+// Collective. Throws std::runtime_error if the file cannot be written completely.
+void writeGasCheckpoint(const GasSolver& gas, const std::string& path, const std::string& checkpoint_id);
+
+// Collective. Throws ConfigError naming the file when its id is not `checkpoint_id` or it does not fit
+// this mesh (another cell count, a cell or face of this mesh missing).
+void readGasCheckpoint(GasSolver& gas, const std::string& path, const std::string& checkpoint_id);
+
+}  // namespace parcelflow::cfd

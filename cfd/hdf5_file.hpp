@@ -1,0 +1,66 @@
+#pragma once
+// A parallel HDF5 file (MPI-IO driver) for collective writes of row blocks, and a serial reader of whole
+// datasets. Every failure throws std::runtime_error naming the file and the dataset: a full disk or an
+// unwritable folder is never silent. Used by the field writer and the gas checkpoint.
+#include <hdf5.h>
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace parcelflow::cfd {
+
+class Hdf5Writer {
+ public:
+  Hdf5Writer(const std::string& path, MPI_Comm comm);  // creates (truncates) the file, collectively
+  ~Hdf5Writer();
+  Hdf5Writer(const Hdf5Writer&) = delete;
+  Hdf5Writer& operator=(const Hdf5Writer&) = delete;
+
+  // Writes rows [offset, offset + rows) of a (totalRows x width) dataset, collectively.
+  void write(const std::string& name, const double* data, long totalRows, long offset, long rows, int width);
+  void write(const std::string& name, const long long* data, long totalRows, long offset, long rows, int width);
+  // Writes this rank's rows at the given row indices of a (totalRows x width) dataset, collectively (a
+  // layout that does not depend on how the rows are spread over ranks).
+  void writeAt(const std::string& name, const double* data, long totalRows, const std::vector<long>& rowIndex,
+               int width);
+  void writeAt(const std::string& name, const long long* data, long totalRows, const std::vector<long>& rowIndex,
+               int width);
+  void attribute(const std::string& name, const std::string& value);  // a string on the root group
+  void attribute(const std::string& name, double value);
+  // Closes the file; throws if HDF5 could not flush it (before that, the file may be incomplete).
+  void close();
+
+ private:
+  void writeTyped(const std::string& name, hid_t type, const void* data, long totalRows, long offset, long rows,
+                  int width);
+  // Collective write of the selected elements; closes the dataset and both dataspaces.
+  void writeSelection(const std::string& name, hid_t set, hid_t type, hid_t memSpace, hid_t fileSpace,
+                      const void* data);
+  void writeAtTyped(const std::string& name, hid_t type, const void* data, long totalRows,
+                    const std::vector<long>& rowIndex, int width);
+  std::string path_;
+  hid_t id_ = -1;
+};
+
+class Hdf5Reader {
+ public:
+  explicit Hdf5Reader(const std::string& path);  // this rank alone, read-only
+  ~Hdf5Reader();
+  Hdf5Reader(const Hdf5Reader&) = delete;
+  Hdf5Reader& operator=(const Hdf5Reader&) = delete;
+
+  std::vector<double> doubles(const std::string& name) const;  // a whole dataset, row-major
+  std::vector<long long> integers(const std::string& name) const;
+  std::string textAttribute(const std::string& name) const;
+  double numberAttribute(const std::string& name) const;
+
+ private:
+  std::string path_;
+  hid_t id_ = -1;
+};
+
+// Rows of this rank in rank order: the sum of `rows` over the lower ranks.
+long rowOffset(long rows, MPI_Comm comm);
+
+}  // namespace parcelflow::cfd

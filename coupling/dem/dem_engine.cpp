@@ -1,0 +1,76 @@
+#include "dem_engine.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "cfd/config_error.hpp"
+#include "lammps.h"
+#include "liggghts_instance.h"
+#include "update.h"
+
+namespace parcelflow::coupling {
+
+namespace {
+
+const char* const kReservedVariables[] = {"dem_step", "restarting", "restart_file"};
+
+std::string exactNumber(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::string& case_folder,
+                     const std::string& log_file)
+    : world_(world), settings_(settings), case_folder_(case_folder), log_file_(log_file) {
+  for (const auto& [name, value] : settings.liggghts.variables)
+    for (const char* reserved : kReservedVariables)
+      if (name == reserved)
+        throw cfd::ConfigError("liggghts.variables." + name, value,
+                               std::string("a name other than dem_step, restarting and restart_file: parcelflow sets ") +
+                                   reserved + " itself");
+}
+
+DemEngine::~DemEngine() = default;
+
+void DemEngine::start(const std::string& restart_file) {
+  const TimeSettings& time = settings_.time;
+  const std::string restart =
+      restart_file.empty() ? std::string("none") : std::filesystem::absolute(restart_file).string();
+  std::vector<std::string> args = {"-log", log_file_, "-var", "dem_step", exactNumber(time.dem_step),
+                                   "-var", "restarting", restart_file.empty() ? "0" : "1",
+                                   "-var", "restart_file", restart};
+  for (const auto& [name, value] : settings_.liggghts.variables) args.insert(args.end(), {"-var", name, value});
+  // LIGGGHTS runs the case's script from the case folder, so that its includes and data files resolve.
+  if (chdir(case_folder_.c_str()) != 0)
+    throw cfd::ConfigError("cannot enter the case folder '" + case_folder_ + "'");
+  lammps_ = std::make_unique<LiggghtsInstance>(world_, args);
+  lammps_->runFile(settings_.liggghts.script);
+  const double script_dt = lammps_->lammps()->update->dt;
+  if (std::abs(script_dt - time.dem_step) > 1e-12 * time.dem_step)
+    throw cfd::ConfigError("time.dem_step is " + exactNumber(time.dem_step) +
+                           " s but the LIGGGHTS script sets timestep " + exactNumber(script_dt) +
+                           " s; use `timestep ${dem_step}` in the script");
+  parcels_ = std::make_unique<DemParcels>(lammps_->lammps());
+  lammps_->quietCommand("run 0 post no");
+}
+
+long DemEngine::step() const { return static_cast<long>(lammps_->lammps()->update->ntimestep); }
+
+void DemEngine::advance(int steps) { lammps_->quietCommand("run " + std::to_string(steps) + " pre no post no"); }
+
+void DemEngine::writeRestart(const std::string& path) {
+  parcels_->keepForcesForRestart();
+  lammps_->quietCommand("write_restart " + path);
+  // write_restart moved atoms between ranks and rebuilt the ghosts, so the neighbour lists are stale: set up
+  // again, exactly as a run restarted from this file does (the kept forces are put back in both).
+  lammps_->quietCommand("run 0 post no");
+}
+
+}  // namespace parcelflow::coupling

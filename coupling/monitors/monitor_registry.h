@@ -1,0 +1,17 @@
+// The monitors of a case, in their column order: those configured under `monitors:` in case.yaml and those
+// every run writes (mean height per type, gas-fraction extremes, counters, the gas step).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "cfd/gas_settings.hpp"
+#include "coupling_settings.h"
+#include "monitor.h"
+
+namespace parcelflow::coupling {
+
+std::vector<std::unique_ptr<Monitor>> makeMonitors(const MonitorSettings& settings, const cfd::Mesh& mesh,
+                                                   const cfd::GasSettings& gas, int ntypes);
+
+}  // namespace parcelflow::coupling

@@ -1,0 +1,48 @@
+#include "monitor_table.h"
+
+#include <mpi.h>
+
+#include "cfd/config_error.hpp"
+#include "cfd/internal_error.hpp"
+
+namespace parcelflow::coupling {
+
+MonitorTable::MonitorTable(std::vector<std::unique_ptr<Monitor>> monitors, const std::string& path,
+                           bool is_writer_rank, long resume_bytes)
+    : monitors_(std::move(monitors)) {
+  std::vector<std::string> columns = {"time"};
+  for (const auto& m : monitors_) {
+    const std::vector<std::string> names = m->columns();
+    widths_.push_back(names.size());
+    columns.insert(columns.end(), names.begin(), names.end());
+  }
+  if (resume_bytes < 0) {
+    csv_ = std::make_unique<CsvWriter>(path, columns, is_writer_rank);
+    return;
+  }
+  // Only the writer rank looks at the file; all ranks stop together if it does not fit.
+  std::string error;
+  try {
+    csv_ = std::make_unique<CsvWriter>(path, columns, is_writer_rank, resume_bytes);
+  } catch (const cfd::ConfigError& e) {
+    error = e.what();
+  }
+  int length = static_cast<int>(error.size());
+  MPI_Allreduce(MPI_IN_PLACE, &length, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (length == 0) return;
+  error.resize(length);
+  MPI_Bcast(error.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+  throw cfd::ConfigError(error);
+}
+
+void MonitorTable::sample(const MonitorInput& in) {
+  std::vector<double> row = {in.time};
+  for (std::size_t k = 0; k < monitors_.size(); ++k) {
+    const std::size_t before = row.size();
+    monitors_[k]->sample(in, row);
+    PARCELFLOW_ASSERT(row.size() - before == widths_[k], "a monitor wrote another number of values than its columns");
+  }
+  csv_->row(row);
+}
+
+}  // namespace parcelflow::coupling

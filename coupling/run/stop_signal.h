@@ -1,0 +1,14 @@
+// parcelflow owns SIGTERM and SIGINT in a coupled run (LIGGGHTS' own handlers would write restart files into
+// the case folder and run on). The handler only raises a flag on the rank that got the signal; the loop
+// agrees on it across ranks once per coupling step (stopRequested), writes a checkpoint and stops.
+#pragma once
+
+#include <mpi.h>
+
+namespace parcelflow::coupling {
+
+void installStopSignalHandlers();
+// The signal any rank got (0: none). Collective: one all-reduce of one int.
+int stopRequested(MPI_Comm comm);
+
+}  // namespace parcelflow::coupling

@@ -1,0 +1,190 @@
+"""Checkpoint and restart of a coupled run (cases/fluidized_column, N = 50 gas steps).
+
+  same_ranks R:   run A for 2N steps (checkpoints every N); run B for N steps, restart, N more, on R ranks.
+                  B's monitors.csv has A's rows, none twice or missing; every monitor value and the last
+                  field snapshot equal A's exactly, and the first gas step after the restart takes the same
+                  number of pressure iterations. Equality is expected bit for bit: the restart restores every
+                  state the next step reads (gas: alpha, p_rgh and its lagged gradient, u, face fluxes; DEM:
+                  the LIGGGHTS restart with the forces the next step starts from), and the run that wrote
+                  the checkpoint sets up LIGGGHTS and the pressure preconditioner again exactly as the
+                  restarted run does. The tolerance below is 1e-12 relative, far below any physical change.
+  other_ranks:    B's checkpoint continued on 1 rank instead of 2. Only the pressure solve's partition differs
+                  (block preconditioner of 1 vs 2 blocks, same tolerance 1e-8 relative): monitors agree to
+                  1e-6 relative after N steps, set by that tolerance times the N steps' growth.
+  refusals:       a case whose drag law differs and a checkpoint with gas.h5 of another checkpoint stop with
+                  exit code 2 before any step, naming what differs.
+  signal R:       SIGTERM to mpirun (and, with 2 ranks, to one rank only) stops the run within a coupling step
+                  with a checkpoint, exit code 143 and the command to continue; continuing it appends rows.
+"""
+import glob
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+import h5py
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, copy_case, fail, run  # noqa: E402
+
+N = 50
+GAS_STEP = 2.0e-4
+
+
+def edit(settings):
+    settings["output"].update({"monitor_interval": GAS_STEP, "checkpoint_interval": N * GAS_STEP,
+                               "fields_interval": N * GAS_STEP, "parcels_interval": N * GAS_STEP})
+
+
+def monitors(out):
+    return np.genfromtxt(os.path.join(out, "monitors.csv"), delimiter=",", names=True)
+
+
+def last_fields(out):
+    files = sorted(glob.glob(os.path.join(out, "fields_0*.h5")))
+    with h5py.File(files[-1]) as f:
+        return os.path.basename(files[-1]), {k: f[k][()] for k in f}
+
+
+def relative_difference(a, b):
+    scale = max(np.nanmax(np.abs(a)), 1e-300)
+    return float(np.nanmax(np.abs(a - b)) / scale) if np.any(np.isfinite(a)) else 0.0
+
+
+def compare(a_out, b_out, tolerance, what, ignore=()):
+    a, b = monitors(a_out), monitors(b_out)
+    if len(b) != len(a) or not np.array_equal(a["time"], b["time"]):
+        fail(f"{what}: monitors.csv has {len(b)} rows, the uninterrupted run {len(a)} (times differ or repeat)")
+    worst = max((relative_difference(a[n], b[n]), n) for n in a.dtype.names if n not in ignore)
+    print(f"[measured] {what}: largest relative monitor difference {worst[0]:.3g} ({worst[1]})")
+    if worst[0] > tolerance:
+        fail(f"{what}: monitor {worst[1]} differs by {worst[0]:.3g} relative (allowed {tolerance})")
+    name_a, fa = last_fields(a_out)
+    name_b, fb = last_fields(b_out)
+    if name_a != name_b:
+        fail(f"{what}: last field snapshot {name_b}, uninterrupted run {name_a} (numbering not continued)")
+    field_worst = max(relative_difference(fa[k], fb[k]) for k in fa)
+    print(f"[measured] {what}: largest relative field difference in {name_a} {field_worst:.3g}")
+    if field_worst > tolerance:
+        fail(f"{what}: fields differ by {field_worst:.3g} relative (allowed {tolerance})")
+    return a, b
+
+
+def same_ranks(parcelflow, launcher, work):
+    case = copy_case(os.path.join(CASES, "fluidized_column"), work, edit)
+    a_out, b_out = os.path.join(work, "A"), os.path.join(work, "B")
+    run(launcher + [parcelflow, "run", case, "--output", a_out, "--end", str(2 * N * GAS_STEP)])
+    run(launcher + [parcelflow, "run", case, "--output", b_out, "--end", str(N * GAS_STEP)])
+    checkpoint = os.path.join(b_out, "checkpoints", "step_%09d" % N)
+    run(launcher + [parcelflow, "run", case, "--output", b_out, "--end", str(2 * N * GAS_STEP),
+                    "--restart", checkpoint])
+    a, b = compare(a_out, b_out, 1e-12, "restart on the same ranks")
+    first = N  # row N (0-based) is the first gas step after the restart
+    print(f"[measured] pressure iterations of the first step after the restart: {b['pressure_iterations'][first]:.0f},"
+          f" uninterrupted {a['pressure_iterations'][first]:.0f}")
+    if abs(b["pressure_iterations"][first] - a["pressure_iterations"][first]) > 1:
+        fail("the first gas step after the restart needs another number of pressure iterations")
+    with h5py.File(sorted(glob.glob(os.path.join(b_out, "parcels_0*.h5")))[-1]) as f:
+        if len(np.unique(f["id"][()])) != len(f["id"][()]):
+            fail("the parcel snapshot after the restart repeats ids")
+    kept = sorted(os.listdir(os.path.join(b_out, "checkpoints")))
+    if kept != ["step_%09d" % N, "step_%09d" % (2 * N)]:
+        fail(f"checkpoints kept: {kept}")
+    return case, a_out, b_out, checkpoint
+
+
+def other_ranks(parcelflow, one_rank, work, case, a_out, b_out, checkpoint):
+    c_out = os.path.join(work, "C")
+    shutil.copytree(b_out, c_out)
+    run(one_rank + [parcelflow, "run", case, "--output", c_out, "--end", str(2 * N * GAS_STEP),
+         "--restart", checkpoint.replace(b_out, c_out)])
+    # PCG's iteration counts depend on the partition by design; they are not compared.
+    compare(a_out, c_out, 1e-6, "restart of a 2-rank checkpoint on 1 rank",
+            ignore=("pressure_iterations", "pressure_iterations_total"))
+
+
+def refusals(parcelflow, launcher, work, case, b_out):
+    first, second = (os.path.join(b_out, "checkpoints", "step_%09d" % k) for k in (N, 2 * N))
+    import yaml
+    other = os.path.join(work, "other_case")
+    shutil.copytree(case, other)
+    settings = yaml.safe_load(open(os.path.join(other, "case.yaml")))
+    settings["coupling"]["drag"] = "Gidaspow"
+    yaml.safe_dump(settings, open(os.path.join(other, "case.yaml"), "w"))
+    mixed = os.path.join(work, "mixed")
+    shutil.copytree(first, mixed)
+    shutil.copy(os.path.join(second, "gas.h5"), os.path.join(mixed, "gas.h5"))
+    for folder, restart, expected in [(other, first, "coupling.drag"), (case, mixed, "checkpoint_id")]:
+        done = subprocess.run(launcher + [parcelflow, "run", folder, "--output", b_out, "--restart", restart],
+                              capture_output=True, text=True)
+        if done.returncode != 2 or expected not in done.stderr or "checkpoint" not in done.stderr:
+            fail(f"restart from {restart} of {folder}: exit {done.returncode}, expected 2 naming {expected}:\n"
+                 f"{done.stdout[-1500:]}{done.stderr[-1500:]}")
+        message = [line for line in done.stderr.splitlines() if line.startswith("parcelflow:")]
+        print(f"[measured] refused: {message[0][:200] if message else '(no parcelflow message)'}")
+
+
+def stop_with_signal(parcelflow, launcher, work, to_one_rank):
+    case = copy_case(os.path.join(CASES, "fluidized_column"), os.path.join(work, "signal"), edit)
+    out = os.path.join(work, "signal", "out")
+    job = subprocess.Popen(launcher + [parcelflow, "run", case, "--output", out, "--end", "5"],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    csv = os.path.join(out, "monitors.csv")
+    deadline = time.time() + 300
+    while time.time() < deadline and (not os.path.exists(csv) or sum(1 for _ in open(csv)) < 30):
+        time.sleep(0.5)
+    if to_one_rank:
+        ranks = subprocess.run(["pgrep", "-f", "-P", str(job.pid), "parcelflow"], capture_output=True,
+                               text=True).stdout.split()
+        if not ranks:
+            fail("no rank process found under mpirun")
+        os.kill(int(ranks[-1]), signal.SIGTERM)
+    else:
+        job.send_signal(signal.SIGTERM)
+    stdout, stderr = job.communicate(timeout=300)
+    if job.returncode == 0 or "--restart" not in stderr:
+        fail(f"SIGTERM: exit {job.returncode}, expected non-zero and how to continue:\n{stdout[-1500:]}{stderr[-1500:]}")
+    checkpoint = stderr.split("--restart")[-1].split()[0]
+    rows = len(monitors(out))
+    print(f"[measured] SIGTERM ({'one rank' if to_one_rank else 'mpirun'}): exit {job.returncode} after "
+          f"{rows} monitor rows, checkpoint {os.path.basename(checkpoint)}")
+    stopped_at = int(os.path.basename(checkpoint).split("_")[1])
+    if rows != stopped_at:
+        fail(f"monitors.csv has {rows} rows at a checkpoint after {stopped_at} gas steps")
+    end = (stopped_at + 10) * GAS_STEP
+    run(launcher + [parcelflow, "run", case, "--output", out, "--end", repr(end), "--restart", checkpoint])
+    m = monitors(out)
+    if len(m) != stopped_at + 10 or np.any(np.diff(m["time"]) <= 0):
+        fail(f"after continuing: {len(m)} rows, expected {stopped_at + 10} with increasing times")
+    for leftover in glob.glob(os.path.join(os.path.dirname(case), "restart_forced*")) + \
+            glob.glob(os.path.join(case, "restart_forced*")):
+        fail(f"a file was written into the case folder: {leftover}")
+
+
+def main():
+    parcelflow, mpiexec, mode = sys.argv[1], sys.argv[2], sys.argv[3]
+    ranks = int(sys.argv[4])
+    launcher = [mpiexec] + sys.argv[5:] + ["-np", str(ranks)]
+    work = tempfile.mkdtemp(prefix="pf_restart_")
+    try:
+        if mode == "restart":
+            case, a_out, b_out, checkpoint = same_ranks(parcelflow, launcher, work)
+            if ranks == 2:
+                other_ranks(parcelflow, [mpiexec] + sys.argv[5:] + ["-np", "1"], work, case, a_out, b_out, checkpoint)
+            refusals(parcelflow, launcher, work, case, b_out)
+        else:
+            stop_with_signal(parcelflow, launcher, work, to_one_rank=False)
+            if ranks == 2:
+                shutil.rmtree(os.path.join(work, "signal"))
+                stop_with_signal(parcelflow, launcher, work, to_one_rank=True)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
