@@ -74,8 +74,15 @@ OutputSettings readOutput(const YamlSection& s) {
 }
 
 MonitorSettings readMonitors(const YamlSection& s, const YAML::Node& node) {
-  s.allowOnly({"pressure_planes", "bed_pressure_drop"});
+  s.allowOnly({"pressure_planes", "bed_pressure_drop", "average"});
   MonitorSettings m;
+  if (s.has("average")) {
+    const YamlSection a = s.map("average");
+    a.allowOnly({"start"});
+    m.average_start = a.number("start", std::nullopt, Range::nonNegative());
+    if (!s.has("pressure_planes"))
+      s.fail("average", "needs monitors.pressure_planes (the averaged pressure profile is taken on them)");
+  }
   if (s.has("pressure_planes")) {
     const YAML::Node planes = node["pressure_planes"];
     if (!planes.IsSequence() || planes.size() == 0)

@@ -20,6 +20,7 @@
 #include "progress_line.h"
 #include "run_counters.h"
 #include "stop_signal.h"
+#include "time_averages.h"
 
 namespace parcelflow::coupling {
 
@@ -39,6 +40,7 @@ struct CoupledRun::State {
   std::unique_ptr<MonitorTable> monitors;
   std::unique_ptr<cfd::FieldWriter> fields;
   std::unique_ptr<ParcelWriter> parcel_output;
+  std::unique_ptr<TimeAverages> averages;  // when monitors.average is set
 
   int dem_steps = 1;
   LoopState loop;        // step, time, next output times (its counters are only used in checkpoints)
@@ -69,6 +71,15 @@ cfd::VectorField vectorField(const std::vector<double>& interleaved) {
   return out;
 }
 
+// u_s = sum(w kappa v) / sum(w kappa) per owned cell, interleaved xyz; zero where no parcel drags.
+std::vector<double> solidsVelocity(const SolidsOnCells& solids) {
+  std::vector<double> us(solids.beta_us.size(), 0.0);
+  for (std::size_t c = 0; c < solids.beta.size(); ++c)
+    if (solids.beta[c] > 0.0)
+      for (int d = 0; d < 3; ++d) us[3 * c + d] = solids.beta_us[3 * c + d] / solids.beta[c];
+  return us;
+}
+
 bool due(double time, double next, double interval, double dt) { return interval > 0.0 && time >= next - 1e-9 * dt; }
 
 const std::vector<std::string> kFieldScalars = {"gas_fraction", "pressure"};
@@ -76,8 +87,7 @@ const std::vector<std::string> kFieldVectors = {"gas_velocity", "solids_velocity
 
 }  // namespace
 
-// Gas fraction, gas velocity, pressure and the solids velocity u_s = sum(w kappa v) / sum(w kappa)
-// (zero where no parcel drags) of the owned cells, as one HDF5 snapshot.
+// Gas fraction, gas velocity, pressure and the solids velocity of the owned cells, as one HDF5 snapshot.
 void writeFields(CoupledRun::State& s);
 void writeParcels(CoupledRun::State& s);
 void writeCheckpoint(CoupledRun::State& s);
@@ -138,6 +148,9 @@ void CoupledRun::initialize() {
   s.loop.next_checkpoint = cs.output.checkpoint_interval;
   s.fields = std::make_unique<cfd::FieldWriter>(mesh, s.output.string(), "fields");
   s.parcel_output = std::make_unique<ParcelWriter>(MPI_COMM_WORLD, s.output.string());
+  if (cs.monitors.averages())
+    s.averages = std::make_unique<TimeAverages>(mesh, cs.monitors.pressure_planes, cs.monitors.average_start,
+                                                std::abs(s.case_def.gas.gas.gravity[2]), s.output.string());
   if (checkpoint) restoreCheckpoint(s, *checkpoint);
   s.monitors = std::make_unique<MonitorTable>(
       makeMonitors(cs.monitors, mesh, s.case_def.gas, s.dem->parcels().ntypes()), (s.output / "monitors.csv").string(),
@@ -211,6 +224,7 @@ bool CoupledRun::advance() {
 
   ++s.loop.step;
   s.loop.time = s.loop.step * dt;
+  if (s.averages) s.averages->add(s.loop.time, dt, *s.gas, s.solids.solid_fraction, solidsVelocity(s.solids));
   s.progress.time = s.loop.time;
   s.progress.parcel_steps += static_cast<double>(parcels.globalCount()) * s.dem_steps;
 
@@ -244,11 +258,7 @@ bool CoupledRun::advance() {
 }
 
 void writeFields(CoupledRun::State& s) {
-  const int n_owned = s.gas->mesh().nOwnedCells();
-  cfd::VectorField solids_velocity(n_owned, cfd::Vec3::Zero());
-  for (int c = 0; c < n_owned; ++c)
-    if (s.solids.beta[c] > 0.0)
-      for (int d = 0; d < 3; ++d) solids_velocity[c][d] = s.solids.beta_us[3 * c + d] / s.solids.beta[c];
+  const cfd::VectorField solids_velocity = vectorField(solidsVelocity(s.solids));
   s.fields->addScalar(kFieldScalars[0], s.gas_fraction);
   s.fields->addScalar(kFieldScalars[1], s.gas->pressure());
   s.fields->addVector(kFieldVectors[0], s.gas->velocity());
@@ -284,6 +294,10 @@ void writeCheckpoint(CoupledRun::State& s) {
   loop.field_times = s.fields->snapshotTimes();
   loop.parcel_snapshots = s.parcel_output->snapshots();
   loop.counters = s.counters.totals(MPI_COMM_WORLD);
+  if (s.averages) {
+    loop.averages = s.averages->save(draft.partial.folder + "/averages.h5", draft.id);
+    s.averages->write(s.loop.time);
+  }
   commitCheckpoint(draft, loop, s.settings, MPI_COMM_WORLD);
   s.last_checkpoint = draft.final.folder;
   if (s.rank == 0) std::printf("parcelflow: checkpoint %s at t = %.6g s in %s\n", draft.id.c_str(), s.loop.time,
@@ -310,12 +324,14 @@ void restoreCheckpoint(CoupledRun::State& s, const Checkpoint& checkpoint) {
     for (auto& field : s.counters.perRank()) *field.second = 0;
   s.fields->continueSeries(saved.field_times, kFieldScalars, kFieldVectors);
   s.parcel_output->continueSeries(saved.parcel_snapshots);
+  if (s.averages) s.averages->restore(saved.averages, checkpoint.paths.folder + "/averages.h5", checkpoint.id);
   s.last_checkpoint = checkpoint.paths.folder;
 }
 
 void CoupledRun::finalize() {
   State& s = *s_;
   if (s.case_def.settings.output.fields_interval == 0.0) writeFields(s);
+  if (s.averages) s.averages->write(s.loop.time);
   const RunCounters total = s.counters.totals(MPI_COMM_WORLD);
   const long lost = s.loop.initial_parcels - s.dem->parcels().globalCount();
   if (s.rank == 0) {
@@ -332,6 +348,9 @@ void CoupledRun::finalize() {
                 "steps, %ld linear solves stopped at max_iterations\n",
                 s.loop.step > 0 ? static_cast<double>(total.pressure_iterations) / s.loop.step : 0.0,
                 total.preconditioner_builds, s.loop.step, total.unconverged_solves);
+    if (s.averages)
+      std::printf("parcelflow: time averages over %.4g s: bed height %.4g m (averages.csv, averages.xdmf)\n",
+                  s.averages->averagedTime(), s.averages->bedHeight());
     std::printf("parcelflow: monitors in %s, fields in %s (open fields.xdmf in ParaView)\n",
                 s.monitors->csv().path().c_str(), s.output.c_str());
   }

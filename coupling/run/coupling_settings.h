@@ -47,6 +47,8 @@ struct MonitorSettings {
   std::vector<double> pressure_planes;         // heights z [m] where mean p and a_g are recorded
   std::array<double, 2> bed_pressure_drop{0.0, 0.0};  // heights (low, high) of the bed pressure drop
   bool has_bed_pressure_drop = false;
+  double average_start = -1.0;  // monitors.average.start [s]: time averages from then on (< 0: none)
+  bool averages() const { return average_start >= 0.0; }
 };
 
 struct CaseSettings {

@@ -13,6 +13,11 @@
                   1e-6 relative after N steps, set by that tolerance times the N steps' growth.
   refusals:       a case whose drag law differs and a checkpoint with gas.h5 of another checkpoint stop with
                   exit code 2 before any step, naming what differs.
+  averages:       monitors.average from 0.004 s: the averaged pressures of averages.csv equal the mean of the
+                  per-step monitor rows after the start (the same quantity averaged independently; 1e-9, as
+                  monitors.csv holds 10 digits), the
+                  profile and bed height follow from them as documented, the averaged solids fraction holds the
+                  parcels' volume (deposition conserves it: 1e-12), and B's averages equal A's after the restart.
   signal R:       SIGTERM to mpirun (and, with 2 ranks, to one rank only) stops the run within a coupling step
                   with a checkpoint, exit code 143 and the command to continue; continuing it appends rows.
 """
@@ -35,9 +40,59 @@ N = 50
 GAS_STEP = 2.0e-4
 
 
+AVERAGE_START = 20 * GAS_STEP
+
+
 def edit(settings):
     settings["output"].update({"monitor_interval": GAS_STEP, "checkpoint_interval": N * GAS_STEP,
                                "fields_interval": N * GAS_STEP, "parcels_interval": N * GAS_STEP})
+    settings["monitors"]["average"] = {"start": AVERAGE_START}
+
+
+def read_averages(out):
+    rows = [line.split(",") for line in open(os.path.join(out, "averages.csv")) if not line.startswith(("#", "z"))]
+    z = np.array([float(r[0]) for r in rows])
+    p = np.array([float(r[1]) for r in rows])
+    profile = np.array([[float(r[2]), float(r[3])] for r in rows if r[2]])
+    header = open(os.path.join(out, "averages.csv")).readline()
+    bed = float(header.split("bed height")[1].split()[0])
+    return z, p, profile, bed
+
+
+def check_averages(out, case):
+    m = monitors(out)
+    z, p, profile, bed = read_averages(out)
+    after = m["time"] > AVERAGE_START + 1e-12
+    names = [n for n in m.dtype.names if n.startswith("p_z")]
+    expected = np.array([m[n][after].mean() for n in names])
+    worst = float(np.max(np.abs(expected - p) / np.abs(expected)))
+    print(f"[measured] averaged plane pressures against the mean of the monitor rows: {worst:.3g} relative")
+    if worst > 1e-9:
+        fail(f"averaged pressures {p} differ from the monitors' mean {expected}")
+    g = 9.81
+    rho = -(np.diff(p)) / (g * np.diff(z))
+    if not np.allclose(profile[:, 1], rho, rtol=1e-9) or not np.allclose(profile[:, 0], 0.5 * (z[1:] + z[:-1])):
+        fail(f"profile {profile} is not -(dp)/(g dz) of the averaged pressures")
+    half = 0.5 * rho.max()
+    mid = profile[:, 0]
+    k = next(k for k in range(len(rho) - 1) if rho[k] >= half > rho[k + 1])
+    expected_bed = mid[k] + (rho[k] - half) / (rho[k] - rho[k + 1]) * (mid[k + 1] - mid[k])
+    print(f"[measured] bed height {bed:.6g} m (from the profile: {expected_bed:.6g} m); bulk density profile "
+          f"{np.round(rho, 1).tolist()} kg/m3")
+    if abs(bed - expected_bed) > 1e-9 * expected_bed:
+        fail("bed height does not follow from the averaged profile")
+    with h5py.File(sorted(glob.glob(os.path.join(out, "averages_0*.h5")))[-1]) as f, \
+            h5py.File(os.path.join(out, "averages_mesh.h5")) as mesh:
+        points = mesh["points"][()].reshape(-1, 8, 3)
+        volume = np.prod(points.max(axis=1) - points.min(axis=1), axis=1)
+        solids = float(np.sum(f["mean_solids_fraction"][()] * volume))
+    import yaml
+    variables = yaml.safe_load(open(os.path.join(case, "case.yaml")))["liggghts"]["variables"]
+    # `radius` is the parcel's: np beads of dp make one sphere of that volume.
+    parcel_volume = int(variables["nparcels"]) * np.pi / 6 * (2 * float(variables["radius"])) ** 3
+    print(f"[measured] averaged solids volume {solids:.6e} m3, parcels {parcel_volume:.6e} m3")
+    if abs(solids - parcel_volume) > 1e-12 * parcel_volume:
+        fail("the averaged solids fraction does not hold the parcels' volume")
 
 
 def monitors(out):
@@ -83,6 +138,10 @@ def same_ranks(parcelflow, launcher, work):
     run(launcher + [parcelflow, "run", case, "--output", b_out, "--end", str(2 * N * GAS_STEP),
                     "--restart", checkpoint])
     a, b = compare(a_out, b_out, 1e-12, "restart on the same ranks")
+    check_averages(a_out, case)
+    if open(os.path.join(a_out, "averages.csv")).read().split("written")[1] != \
+            open(os.path.join(b_out, "averages.csv")).read().split("written")[1]:
+        fail("averages.csv after the restart differs from the uninterrupted run's")
     first = N  # row N (0-based) is the first gas step after the restart
     print(f"[measured] pressure iterations of the first step after the restart: {b['pressure_iterations'][first]:.0f},"
           f" uninterrupted {a['pressure_iterations'][first]:.0f}")
