@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "cfd/internal_error.hpp"
+#include "cfd/config_error.hpp"
 
 namespace parcelflow::coupling {
 namespace {
@@ -47,7 +48,7 @@ DragLaw makeDragLaw(const std::string& name) {
     if (e.name == name) return e.make();
   std::string valid;
   for (const Entry& e : registry()) valid += (valid.empty() ? "" : ", ") + e.name;
-  throw std::invalid_argument("unknown drag law '" + name + "'; valid names are: " + valid);
+  throw cfd::ConfigError("coupling.drag", name, "one of " + valid);
 }
 
 std::string dragLawName(const DragLaw& law) {

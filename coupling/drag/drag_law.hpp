@@ -5,7 +5,7 @@
 // reference()` and an inline `double coefficient(const DragInput&) const` returning K = beta / a_s.
 // A DragLaw holds one of them; the registry is built from the alternatives of this variant, so adding a
 // law means: write the class, add it to the list below. makeDragLaw("WenYu") selects one at run time;
-// an unknown name throws std::invalid_argument listing the valid names.
+// an unknown name throws cfd::ConfigError listing the valid names.
 //
 // Hot loops visit the variant ONCE and run a loop templated on the concrete law
 // (forEachParcel in parcel_drag.hpp, or visitDragLaw with a generic lambda).
@@ -42,7 +42,7 @@ inline bool usesMeanDiameter(const DragLaw& law) {
 // Registered names, in registry order.
 std::vector<std::string> dragLawNames();
 
-// The law registered under `name` (exact, case-sensitive); throws std::invalid_argument naming the
+// The law registered under `name` (exact, case-sensitive); throws cfd::ConfigError naming the
 // valid ones otherwise.
 DragLaw makeDragLaw(const std::string& name);
 

@@ -47,7 +47,7 @@ struct DragStats {
 };
 
 namespace drag_detail {
-void checkBatch(const ParcelDragBatch& batch, const DragLimits& limits);  // throws std::invalid_argument
+void checkBatch(const ParcelDragBatch& batch, const DragLimits& limits);  // PARCELFLOW_ASSERT
 }
 
 // Calls fn(p, K, kappa) for every parcel p, K = beta / a_s [kg/(m^3 s)], kappa = np V_p K [kg/s].

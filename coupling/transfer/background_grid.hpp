@@ -13,7 +13,7 @@ struct BackgroundGrid {
   std::array<int, 3> cells{0, 0, 0};
 
   double cellCentre(int axis, int index) const { return origin[axis] + (index + 0.5) * spacing[axis]; }
-  // Throws std::invalid_argument on non-positive spacing or cell counts.
+  // Requires positive spacing and cell counts (PARCELFLOW_ASSERT).
   void validate() const;
 };
 

@@ -3,13 +3,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "cfd/internal_error.hpp"
+
 namespace parcelflow::coupling {
 
 CentroidKernel::CentroidKernel(int searchRadius) : r_(searchRadius) {
-  if (searchRadius < 0 || searchRadius > maxSearchRadius)
-    throw std::invalid_argument("centroid kernel: fallback search radius must be in [0, " +
-                                std::to_string(maxSearchRadius) + "] cells, got " +
-                                std::to_string(searchRadius));
+  PARCELFLOW_ASSERT(searchRadius >= 0 && searchRadius <= maxSearchRadius,
+                    "centroid kernel: fallback search radius must be in [0, " + std::to_string(maxSearchRadius) +
+                        "] cells, got " + std::to_string(searchRadius));
 }
 
 }  // namespace parcelflow::coupling

@@ -16,7 +16,7 @@ class CentroidKernel {
   static constexpr const char* typeName = "centroid";
   static constexpr int maxSearchRadius = 3;
 
-  // Throws std::invalid_argument unless 0 <= searchRadius <= maxSearchRadius.
+  // Requires 0 <= searchRadius <= maxSearchRadius (PARCELFLOW_ASSERT).
   explicit CentroidKernel(int searchRadius = 1);
 
   int searchRadius() const { return r_; }

@@ -3,15 +3,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "cfd/internal_error.hpp"
+
 namespace parcelflow::coupling {
 
 GaussianKernel::GaussianKernel(double sharpness, int radius)
     : a_(sharpness), r_(radius), expMinus2a_(std::exp(-2.0 * sharpness)) {
-  if (!(sharpness > 0.0) || !std::isfinite(sharpness))
-    throw std::invalid_argument("gaussian kernel: sharpness a must be > 0, got " + std::to_string(sharpness));
-  if (radius < 0 || radius > maxRadius)
-    throw std::invalid_argument("gaussian kernel: stencil radius must be in [0, " + std::to_string(maxRadius) +
-                                "] cells, got " + std::to_string(radius));
+  // The case reader has checked both (coupling.kernel): a failure here is a bug.
+  PARCELFLOW_ASSERT(sharpness > 0.0 && std::isfinite(sharpness),
+                    "gaussian kernel: sharpness a must be > 0, got " + std::to_string(sharpness));
+  PARCELFLOW_ASSERT(radius >= 0 && radius <= maxRadius, "gaussian kernel: stencil radius must be in [0, " +
+                                                            std::to_string(maxRadius) + "] cells, got " +
+                                                            std::to_string(radius));
 }
 
 double GaussianKernel::retainedMassFraction1D(double sharpness, int radius, double offset) {

@@ -21,7 +21,7 @@ class GaussianKernel {
   static constexpr int maxRadius = 4;
   static_assert(2 * maxRadius + 1 <= Window::maxWidth);
 
-  // Throws std::invalid_argument unless a > 0 and 0 <= radius <= maxRadius.
+  // Requires a > 0 and 0 <= radius <= maxRadius (PARCELFLOW_ASSERT).
   explicit GaussianKernel(double sharpness = 1.0, int radius = 2);
 
   double sharpness() const { return a_; }

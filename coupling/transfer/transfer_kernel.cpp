@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "cfd/config_error.hpp"
+
 namespace parcelflow::coupling {
 
 std::vector<std::string> transferKernelNames() { return {GaussianKernel::typeName, CentroidKernel::typeName}; }
@@ -11,7 +13,7 @@ TransferKernel makeTransferKernel(const std::string& name, const TransferKernelO
   if (name == CentroidKernel::typeName) return CentroidKernel(options.centroidSearchRadius);
   std::string valid;
   for (const std::string& n : transferKernelNames()) valid += (valid.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown transfer kernel '" + name + "'; valid names are: " + valid);
+  throw cfd::ConfigError("coupling.kernel.type", name, "one of " + valid);
 }
 
 std::string transferKernelName(const TransferKernel& kernel) {

@@ -2,7 +2,7 @@
 // Run-time selection of the particle <-> mesh kernel by name ("gaussian", "centroid"). A
 // TransferKernel holds one concrete kernel; buildBoxStencils visits it once per batch and runs a loop
 // templated on the concrete kernel (no virtual call per parcel). Unknown names throw
-// std::invalid_argument listing the valid ones.
+// cfd::ConfigError listing the valid ones.
 #include <string>
 #include <variant>
 #include <vector>
