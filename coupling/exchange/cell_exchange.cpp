@@ -20,11 +20,12 @@ std::vector<int> scaled(const std::vector<int>& v, int factor) {
 
 }  // namespace
 
-CellExchange::Routing CellExchange::route(const std::vector<long>& cells) const {
+void CellExchange::setCells(const std::vector<long>& cells) {
   MPI_Comm comm = owners_.comm();
   int nranks = 0;
   MPI_Comm_size(comm, &nranks);
-  Routing r;
+  Routing& r = route_;
+  r = Routing{};
   r.send_counts.assign(nranks, 0);
   for (long cell : cells) {
     const int owner = owners_.ownerRank(cell);
@@ -48,12 +49,11 @@ CellExchange::Routing CellExchange::route(const std::vector<long>& cells) const 
   r.remote_index.resize(r.recv_offsets.back() + r.recv_counts.back());
   MPI_Alltoallv(send_index.data(), r.send_counts.data(), r.send_offsets.data(), MPI_INT, r.remote_index.data(),
                 r.recv_counts.data(), r.recv_offsets.data(), MPI_INT, comm);
-  return r;
 }
 
-void CellExchange::sumToOwners(const std::vector<long>& cells, const std::vector<double>& values, int width,
-                               std::vector<double>& owned) const {
-  const Routing r = route(cells);
+void CellExchange::sumToOwners(const std::vector<double>& values, int width, std::vector<double>& owned) const {
+  const Routing& r = route_;
+  PARCELFLOW_ASSERT(values.size() == r.order.size() * width, "CellExchange: values do not match the routed cells");
   std::vector<double> send(values.size());
   for (std::size_t slot = 0; slot < r.order.size(); ++slot)
     for (int k = 0; k < width; ++k) send[slot * width + k] = values[r.order[slot] * width + k];
@@ -65,17 +65,16 @@ void CellExchange::sumToOwners(const std::vector<long>& cells, const std::vector
     for (int k = 0; k < width; ++k) owned[r.remote_index[t] * width + k] += recv[t * width + k];
 }
 
-void CellExchange::fetchFromOwners(const std::vector<long>& cells, const std::vector<double>& owned, int width,
-                                   std::vector<double>& out) const {
-  const Routing r = route(cells);
+void CellExchange::fetchFromOwners(const std::vector<double>& owned, int width, std::vector<double>& out) const {
+  const Routing& r = route_;
   std::vector<double> reply(r.remote_index.size() * width);
   for (std::size_t t = 0; t < r.remote_index.size(); ++t)
     for (int k = 0; k < width; ++k) reply[t * width + k] = owned[r.remote_index[t] * width + k];
-  std::vector<double> recv(cells.size() * width);
+  std::vector<double> recv(r.order.size() * width);
   MPI_Alltoallv(reply.data(), scaled(r.recv_counts, width).data(), scaled(r.recv_offsets, width).data(), MPI_DOUBLE,
                 recv.data(), scaled(r.send_counts, width).data(), scaled(r.send_offsets, width).data(), MPI_DOUBLE,
                 owners_.comm());
-  out.assign(cells.size() * width, 0.0);
+  out.assign(r.order.size() * width, 0.0);
   for (std::size_t slot = 0; slot < r.order.size(); ++slot)
     for (int k = 0; k < width; ++k) out[r.order[slot] * width + k] = recv[slot * width + k];
 }

@@ -49,12 +49,13 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
           touched_.push_back(backgroundCell(i, j, k));
           box_of_touched_.push_back(stencils_.boxIndex(i, j, k));
         }
+  exchange_.setCells(touched_);
   return stats;
 }
 
 std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& owned, int width) const {
   std::vector<double> values;
-  exchange_.fetchFromOwners(touched_, owned, width, values);
+  exchange_.fetchFromOwners(owned, width, values);
   return values;
 }
 
@@ -66,7 +67,7 @@ void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, i
   for (std::size_t t = 0; t < touched_.size(); ++t)
     for (int m = 0; m < width; ++m) on_touched[width * t + m] = on_box[width * box_of_touched_[t] + m];
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
-  exchange_.sumToOwners(touched_, on_touched, width, owned);
+  exchange_.sumToOwners(on_touched, width, owned);
 }
 
 std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>& owned, int width,

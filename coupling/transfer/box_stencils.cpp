@@ -87,25 +87,77 @@ TransferStats buildWith(const Kernel& kernel, const BackgroundGrid& grid, const 
 // one stretch of n[0] ncomp doubles, updated by one multiply-add loop (the x factors are folded into
 // the parcel's values first). Width > 0: the component count is known at compile time; Width = 0
 // reads it from `ncomp`.
+// One parcel's window rows with a compile-time row length (NX cells of Width components) where both are
+// known (the loop then unrolls and vectorises); NX = 0 or Width = 0: run-time lengths.
+template <int Width, int NX>
+void depositOne(const Window& w, std::size_t ncomp, const double* qp, double* box, std::size_t sy, std::size_t sz) {
+  const std::size_t nc = Width > 0 ? static_cast<std::size_t>(Width) : ncomp;
+  const std::size_t nx = NX > 0 ? static_cast<std::size_t>(NX) : static_cast<std::size_t>(w.n[0]);
+  double xq[Window::maxWidth * (Width > 0 ? Width : 8)];  // f_x[a] q[m] at a nc + m
+  std::vector<double> wide;
+  double* xqp = xq;
+  if (Width == 0 && nc > 8) {
+    wide.resize(Window::maxWidth * nc);
+    xqp = wide.data();
+  }
+  for (std::size_t a = 0; a < nx; ++a)
+    for (std::size_t m = 0; m < nc; ++m) xqp[nc * a + m] = w.f[0][a] * qp[m];
+  const std::size_t len = nc * nx;
+  for (int c = 0; c < w.n[2]; ++c)
+    for (int b = 0; b < w.n[1]; ++b) {
+      const double wzy = w.f[2][c] * w.f[1][b];
+      double* row = box + c * sz + b * sy;
+      for (std::size_t e = 0; e < len; ++e) row[e] += wzy * xqp[e];
+    }
+}
+
+template <int Width, int NX>
+void gatherOne(const Window& w, std::size_t ncomp, const double* box, double* out, std::size_t sy, std::size_t sz) {
+  const std::size_t nc = Width > 0 ? static_cast<std::size_t>(Width) : ncomp;
+  const std::size_t nx = NX > 0 ? static_cast<std::size_t>(NX) : static_cast<std::size_t>(w.n[0]);
+  double rows[Window::maxWidth * (Width > 0 ? Width : 8)] = {};  // sum over the rows of f_z f_y value
+  std::vector<double> wide;
+  double* rowsp = rows;
+  if (Width == 0 && nc > 8) {
+    wide.assign(Window::maxWidth * nc, 0.0);
+    rowsp = wide.data();
+  }
+  const std::size_t len = nc * nx;
+  for (int c = 0; c < w.n[2]; ++c)
+    for (int b = 0; b < w.n[1]; ++b) {
+      const double wzy = w.f[2][c] * w.f[1][b];
+      const double* row = box + c * sz + b * sy;
+      for (std::size_t e = 0; e < len; ++e) rowsp[e] += wzy * row[e];
+    }
+  for (std::size_t m = 0; m < nc; ++m) {
+    double sum = 0.0;
+    for (std::size_t a = 0; a < nx; ++a) sum += w.f[0][a] * rowsp[nc * a + m];
+    out[m] = sum;
+  }
+}
+
+// Calls f(integral_constant<int, NX>) with NX = n for the window widths of R <= 2 (1 to 5), else NX = 0.
+template <class F>
+void withRowCells(int n, F&& f) {
+  switch (n) {
+    case 1: return f(std::integral_constant<int, 1>{});
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 5: return f(std::integral_constant<int, 5>{});
+    default: return f(std::integral_constant<int, 0>{});
+  }
+}
+
 template <int Width>
 void depositLoop(const BoxStencils& set, std::size_t ncomp, const double* q, double* boxQ) {
   const std::size_t nc = Width > 0 ? static_cast<std::size_t>(Width) : ncomp;
   const std::size_t sy = nc * set.cells[0], sz = sy * set.cells[1];
-  std::vector<double> xq(Window::maxWidth * nc);  // f_x[a] q[m] at a nc + m
   for (std::size_t p = 0; p < set.parcels(); ++p) {
     if (set.first[p] < 0) continue;
     const Window& w = set.windows[p];
-    const double* qp = q + nc * p;
-    const std::size_t len = nc * w.n[0];
-    for (int a = 0; a < w.n[0]; ++a)
-      for (std::size_t m = 0; m < nc; ++m) xq[nc * a + m] = w.f[0][a] * qp[m];
     double* box = boxQ + nc * static_cast<std::size_t>(set.first[p]);
-    for (int c = 0; c < w.n[2]; ++c)
-      for (int b = 0; b < w.n[1]; ++b) {
-        const double wzy = w.f[2][c] * w.f[1][b];
-        double* row = box + c * sz + b * sy;
-        for (std::size_t e = 0; e < len; ++e) row[e] += wzy * xq[e];
-      }
+    withRowCells(w.n[0], [&](auto nx) { depositOne<Width, nx()>(w, nc, q + nc * p, box, sy, sz); });
   }
 }
 
@@ -114,7 +166,6 @@ void gatherLoop(const BoxStencils& set, std::size_t ncomp, const double* boxQ, d
                 double orphanValue) {
   const std::size_t nc = Width > 0 ? static_cast<std::size_t>(Width) : ncomp;
   const std::size_t sy = nc * set.cells[0], sz = sy * set.cells[1];
-  std::vector<double> rows(Window::maxWidth * nc);  // sum over the rows of f_z f_y value, per x cell
   for (std::size_t p = 0; p < set.parcels(); ++p) {
     double* out = parcelQ + nc * p;
     if (set.first[p] < 0) {
@@ -122,20 +173,8 @@ void gatherLoop(const BoxStencils& set, std::size_t ncomp, const double* boxQ, d
       continue;
     }
     const Window& w = set.windows[p];
-    const std::size_t len = nc * w.n[0];
-    for (std::size_t e = 0; e < len; ++e) rows[e] = 0.0;
     const double* box = boxQ + nc * static_cast<std::size_t>(set.first[p]);
-    for (int c = 0; c < w.n[2]; ++c)
-      for (int b = 0; b < w.n[1]; ++b) {
-        const double wzy = w.f[2][c] * w.f[1][b];
-        const double* row = box + c * sz + b * sy;
-        for (std::size_t e = 0; e < len; ++e) rows[e] += wzy * row[e];
-      }
-    for (std::size_t m = 0; m < nc; ++m) {
-      double sum = 0.0;
-      for (int a = 0; a < w.n[0]; ++a) sum += w.f[0][a] * rows[nc * a + m];
-      out[m] = sum;
-    }
+    withRowCells(w.n[0], [&](auto nx) { gatherOne<Width, nx()>(w, nc, box, out, sy, sz); });
   }
 }
 

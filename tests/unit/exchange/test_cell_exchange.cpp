@@ -54,7 +54,8 @@ TEST(CellExchange, SumsEveryContributionIntoItsOwnerExactlyOnce) {
   for (long c : cells)
     for (int k = 0; k < width; ++k) values.push_back(contribution(w.rank, c, k));
   std::vector<double> owned(mine.size() * width, 0.0);
-  exchange.sumToOwners(cells, values, width, owned);
+  exchange.setCells(cells);
+  exchange.sumToOwners(values, width, owned);
 
   for (std::size_t i = 0; i < mine.size(); ++i) {
     for (int k = 0; k < width; ++k) {
@@ -76,7 +77,8 @@ TEST(CellExchange, FetchReturnsTheOwnersValues) {
   for (long c : mine) owned.insert(owned.end(), {c * 1.5, -c * 0.5});
   const auto cells = touchedBy(w.rank);
   std::vector<double> fetched;
-  exchange.fetchFromOwners(cells, owned, 2, fetched);
+  exchange.setCells(cells);
+  exchange.fetchFromOwners(owned, 2, fetched);
   ASSERT_EQ(fetched.size(), cells.size() * 2);
   for (std::size_t t = 0; t < cells.size(); ++t) {
     EXPECT_EQ(fetched[2 * t], cells[t] * 1.5);

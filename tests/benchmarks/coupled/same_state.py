@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""Benchmark: the coupled loop against pure LIGGGHTS from the same bed state, for the same DEM steps.
+
+1. Runs a case coupled until --establish seconds (the bed fluidized) and writes a checkpoint there.
+2. Continues that checkpoint coupled for --steps gas steps: the loop's wall time from parcelflow's summary
+   line (LIGGGHTS' start-up excluded) and its DEM / coupling / gas / output split.
+3. Runs the checkpoint's LIGGGHTS restart in pure LIGGGHTS (`parcelflow dem`, the case's own script, which reads
+   the restart) for the same number of DEM steps: the same parcels and contacts, with the last gas forces held
+   fixed by fix parcel/implicit_drag (kappa, u_f and f_p are in the restart), so the bed stays fluidized. Its
+   time is LIGGGHTS' 'Loop time'.
+Both on the same ranks, back to back. Prints both times, their ratio, the split and parcel-steps per second.
+"""
+import argparse
+import os
+import re
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, copy_case, loop_timing, run  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--parcelflow", required=True)
+    parser.add_argument("--case", default="fluidized_column")
+    parser.add_argument("--establish", type=float, default=0.2, help="simulated time to the measured state [s]")
+    parser.add_argument("--steps", type=int, default=1000, help="gas steps measured")
+    parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--mpiexec", nargs=argparse.REMAINDER, default=["mpirun"])
+    args = parser.parse_args()
+    launch = args.mpiexec + ["-np", str(args.ranks)]
+    with tempfile.TemporaryDirectory() as tmp:
+        settings = {}
+
+        def edit(case_settings):
+            case_settings.setdefault("output", {}).update({"checkpoint_interval": args.establish,
+                                                           "fields_interval": 0, "progress_interval": 1e6})
+            settings.update(case_settings)
+
+        case = copy_case(os.path.join(CASES, args.case), tmp, edit)
+        out = os.path.join(tmp, "out")
+        run(launch + [args.parcelflow, "run", case, "--output", out, "--end", repr(args.establish)], tmp)
+        checkpoint = sorted(os.listdir(os.path.join(out, "checkpoints")))[-1]
+        checkpoint = os.path.join(out, "checkpoints", checkpoint)
+        t = settings["time"]
+        dem_per_gas = round(t["gas_step"] / t["dem_step"])
+        end = args.establish + args.steps * t["gas_step"]
+        coupled = run(launch + [args.parcelflow, "run", case, "--output", out, "--end", repr(end),
+                                "--restart", checkpoint], tmp)
+        wall, split = loop_timing(coupled)
+        steps = args.steps * dem_per_gas
+        with open(os.path.join(case, "in.pure"), "w") as f:
+            f.write(f"include {settings['liggghts']['script']}\nrun 0 post no\nrun {steps}\n")
+        variables = dict(settings["liggghts"].get("variables", {}), dem_step=repr(t["dem_step"]), restarting="1",
+                         restart_file=os.path.join(checkpoint, "dem.restart"))
+        command = launch + [args.parcelflow, "dem", "in.pure", "-log", os.path.join(tmp, "log.pure")]
+        for name, value in variables.items():
+            command += ["-var", name, str(value)]
+        pure_out = run(command, case)
+        seconds, atoms = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for \d+ steps with (\d+) atoms",
+                                    pure_out)[-1]
+        pure = float(seconds)
+    parcels = int(atoms)
+    print(f"{args.case}: {parcels} parcels, {steps} DEM steps ({args.steps} gas steps) from t = {args.establish} s on "
+          f"{args.ranks} rank(s): coupled loop {wall:.2f} s, pure LIGGGHTS {pure:.2f} s, ratio {wall / pure:.3f}; "
+          f"coupled {parcels * steps / wall:.3g}, pure {parcels * steps / pure:.3g} parcel-steps/s")
+    print(f"coupled split: {split}")
+
+
+if __name__ == "__main__":
+    main()
