@@ -9,6 +9,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_support.h"
 #include "group.h"
 #include "modify.h"
 #include "parcel_math.h"
@@ -22,19 +23,12 @@ namespace {
 constexpr double kDiameterTolerance = 1e-6;  // relative; inserted diameter vs. parcel diameter D
 constexpr int kRestartVersion = 1;
 
-std::vector<std::string> settings_args(int narg, char** arg)
-{
-  std::vector<std::string> args;
-  for (int i = 3; i < narg; ++i) args.emplace_back(arg[i]);
-  return args;
-}
-
 }  // namespace
 
 FixParcel::FixParcel(LAMMPS* lmp, int narg, char** arg) : PerAtomColumnsFix(lmp, narg, arg, NCOLUMNS)
 {
   try {
-    settings_ = parse_parcel_settings(settings_args(narg, arg));
+    settings_ = parse_parcel_settings(style_arguments(narg, arg));
   } catch (const ArgumentError& e) {
     fail(e.what());
   }
@@ -168,11 +162,7 @@ void FixParcel::write_restart(FILE* fp)
     list.push_back(c.mass_fraction);
   }
   list.push_back(assigned_);
-  if (comm->me == 0) {
-    const int size = static_cast<int>(list.size() * sizeof(double));
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list.data(), sizeof(double), list.size(), fp);
-  }
+  write_global_state(comm->me, fp, list);
 }
 
 void FixParcel::restart(char* buf)

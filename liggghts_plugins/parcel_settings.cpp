@@ -15,6 +15,10 @@ namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
+const std::string kKeywords = "mode, np, diameter, dp, distribution, seed, scaling";
+
+}  // namespace
+
 bool is_number(const std::string& token)
 {
   if (token.empty()) return false;
@@ -24,10 +28,6 @@ bool is_number(const std::string& token)
   const double v = std::strtod(begin, &end);
   return end != begin && *end == '\0' && errno == 0 && std::isfinite(v);
 }
-
-const std::string kKeywords = "mode, np, diameter, dp, distribution, seed, scaling";
-
-}  // namespace
 
 double parse_number(const std::string& keyword, const std::string& token)
 {

@@ -39,6 +39,9 @@ struct ParcelSettings {
 // Parses the arguments after the style name, e.g. {"mode","constant_np","np","8","scaling","linear"}.
 ParcelSettings parse_parcel_settings(const std::vector<std::string>& args);
 
+// Whether the whole token is a finite number.
+bool is_number(const std::string& token);
+
 // Strict number parsing: the whole token must be a finite number. Throws ArgumentError naming keyword.
 double parse_number(const std::string& keyword, const std::string& token);
 

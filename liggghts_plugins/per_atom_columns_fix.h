@@ -25,6 +25,7 @@ class PerAtomColumnsFix : public LAMMPS_NS::Fix {
 
   // Row i (local atom) of the columns; re-fetch after every run (atoms move and reorder).
   double** peratom() { return data_; }
+  int ncolumns() const { return ncolumns_; }
   // Atoms this rank received from other ranks since the fix was created (shows migration in tests).
   long atoms_received() const { return atoms_received_; }
 

@@ -3,6 +3,7 @@
 #include "fix_map_access.h"
 #include "fix_parcel.h"
 #include "fix_parcel_implicit_drag.h"
+#include "fix_parcel_reinject.h"
 #include "lammps.h"
 
 namespace parcelflow::plugins {
@@ -21,6 +22,7 @@ void register_styles(LAMMPS_NS::LAMMPS* lmp)
   auto& fixes = fix_map(lmp);
   fixes["parcel"] = &create_fix<FixParcel>;
   fixes["parcel/implicit_drag"] = &create_fix<FixParcelImplicitDrag>;
+  fixes["parcel/reinject"] = &create_fix<FixParcelReinject>;
 }
 
 }  // namespace parcelflow::plugins

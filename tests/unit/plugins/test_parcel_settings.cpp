@@ -1,4 +1,5 @@
-// Argument parsing of `fix ID group parcel ...`: accepted forms and the error messages.
+// Argument parsing of `fix ID group parcel ...` and `fix ID group parcel/reinject ...`: accepted forms and
+// the error messages.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -6,6 +7,7 @@
 #include <vector>
 
 #include "parcel_settings.h"
+#include "reinject_settings.h"
 
 using namespace parcelflow::plugins;
 
@@ -21,17 +23,28 @@ std::vector<std::string> split(const std::string& s)
 
 ParcelSettings parse(const std::string& s) { return parse_parcel_settings(split(s)); }
 
-// Expects an ArgumentError whose message contains every fragment.
-void expect_error(const std::string& args, const std::vector<std::string>& fragments)
+// Expects an ArgumentError from parser(args) whose message contains every fragment.
+template <class Parser>
+void expect_error_of(Parser parser, const std::string& args, const std::vector<std::string>& fragments)
 {
   try {
-    parse(args);
+    parser(split(args));
     ADD_FAILURE() << "no error for: " << args;
   } catch (const ArgumentError& e) {
     const std::string msg = e.what();
     std::cout << "[ message ] " << args << "\n            -> " << msg << "\n";
     for (const auto& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
   }
+}
+
+void expect_error(const std::string& args, const std::vector<std::string>& fragments)
+{
+  expect_error_of(parse_parcel_settings, args, fragments);
+}
+
+void expect_reinject_error(const std::string& args, const std::vector<std::string>& fragments)
+{
+  expect_error_of(parse_reinject_settings, args, fragments);
 }
 
 }  // namespace
@@ -99,4 +112,40 @@ TEST(ParcelSettings, Errors)
                {"'scaling' linear", "2 particle diameters", "scaling none"});
   // within 1e-6 is accepted
   EXPECT_NO_THROW(parse("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5000009"));
+}
+
+TEST(ReinjectSettings, AcceptedFormsAndDefaults)
+{
+  const ReinjectSettings s = parse_reinject_settings(split("outlet top return bottom velocity 0 -0.5 1e-1"));
+  EXPECT_EQ(s.outlet, "top");
+  EXPECT_EQ(s.return_region, "bottom");
+  EXPECT_EQ(s.velocity, (std::array<double, 3>{0.0, -0.5, 0.1}));
+  EXPECT_EQ(s.every, 1);
+  EXPECT_EQ(s.seed, 12345679u);
+  EXPECT_EQ(s.attempts, 100);
+  const ReinjectSettings t =
+      parse_reinject_settings(split("attempts 7 seed 4294967295 every 25 velocity 1 2 3 return b outlet a"));
+  EXPECT_EQ(t.every, 25);
+  EXPECT_EQ(t.seed, 4294967295u);
+  EXPECT_EQ(t.attempts, 7);
+  EXPECT_EQ(t.outlet, "a");
+}
+
+TEST(ReinjectSettings, Errors)
+{
+  const std::string base = "outlet top return bottom velocity 0 0 1 ";
+  expect_reinject_error("return bottom velocity 0 0 1", {"'outlet' is missing", "outlet REGION_ID"});
+  expect_reinject_error("outlet top velocity 0 0 1", {"'return' is missing"});
+  expect_reinject_error("outlet top return bottom", {"'velocity' is missing", "velocity vx vy vz"});
+  expect_reinject_error("outlet top return bottom velocity 0 1", {"'velocity' needs three numbers"});
+  expect_reinject_error("outlet top return bottom velocity 0 up 1", {"'velocity' got 'up'", "three numbers"});
+  expect_reinject_error(base + "every -5", {"'every' got '-5'", "an integer >= 1"});
+  expect_reinject_error(base + "every 0", {"'every' got '0'"});
+  expect_reinject_error(base + "every 2.5", {"'every' got '2.5'"});
+  expect_reinject_error(base + "every", {"'every' needs an integer >= 1"});
+  expect_reinject_error(base + "seed 0", {"'seed' got '0'", "1 to 4294967295"});
+  expect_reinject_error(base + "attempts x", {"'attempts' got 'x'", "an integer >= 1"});
+  expect_reinject_error(base + "every 2 every 3", {"'every' given twice"});
+  expect_reinject_error(base + "colour red", {"unknown keyword 'colour'", "outlet, return, velocity, every, seed, attempts"});
+  expect_reinject_error("outlet same return same velocity 0 0 1", {"'outlet' and 'return' both got 'same'", "two different"});
 }
