@@ -8,11 +8,12 @@
 #include "gas_step_monitor.h"
 #include "mean_height_monitor.h"
 #include "pressure_planes_monitor.h"
+#include "reinjection_monitor.h"
 
 namespace parcelflow::coupling {
 
 std::vector<std::unique_ptr<Monitor>> makeMonitors(const MonitorSettings& settings, const cfd::Mesh& mesh,
-                                                   const cfd::GasSettings& gas, int ntypes) {
+                                                   const cfd::GasSettings& gas, const DemParcels& parcels) {
   std::vector<std::unique_ptr<Monitor>> m;
   if (settings.has_bed_pressure_drop)
     m.push_back(std::make_unique<BedPressureDropMonitor>(mesh, settings.bed_pressure_drop[0],
@@ -20,10 +21,11 @@ std::vector<std::unique_ptr<Monitor>> makeMonitors(const MonitorSettings& settin
                                                          std::abs(gas.gas.gravity[2])));
   if (!settings.pressure_planes.empty())
     m.push_back(std::make_unique<PressurePlanesMonitor>(mesh, settings.pressure_planes));
-  m.push_back(std::make_unique<MeanHeightMonitor>(ntypes));
+  m.push_back(std::make_unique<MeanHeightMonitor>(parcels.ntypes()));
   m.push_back(std::make_unique<GasFractionExtremesMonitor>());
   m.push_back(std::make_unique<CountersMonitor>());
   m.push_back(std::make_unique<GasStepMonitor>());
+  if (parcels.reinjection()) m.push_back(std::make_unique<ReinjectionMonitor>(*parcels.reinjection()));
   return m;
 }
 

@@ -1,5 +1,6 @@
-// The monitors of a case, in their column order: those configured under `monitors:` in case.yaml and those
-// every run writes (mean height per type, gas-fraction extremes, counters, the gas step).
+// The monitors of a case, in their column order: those configured under `monitors:` in case.yaml, those
+// every run writes (mean height per type, gas-fraction extremes, counters, the gas step), and the outlet
+// reinjection's when the LIGGGHTS script has `fix parcel/reinject`.
 #pragma once
 
 #include <memory>
@@ -12,6 +13,6 @@
 namespace parcelflow::coupling {
 
 std::vector<std::unique_ptr<Monitor>> makeMonitors(const MonitorSettings& settings, const cfd::Mesh& mesh,
-                                                   const cfd::GasSettings& gas, int ntypes);
+                                                   const cfd::GasSettings& gas, const DemParcels& parcels);
 
 }  // namespace parcelflow::coupling
