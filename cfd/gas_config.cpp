@@ -4,9 +4,14 @@
 #include <vector>
 
 #include "config_error.hpp"
+#include "yaml_duplicate_keys.hpp"
 #include "yaml_section.hpp"
 
 namespace parcelflow::cfd {
+
+namespace {
+constexpr double kMaxBackgroundCells = 1e8;
+}  // namespace
 
 const std::vector<std::string>& GasConfig::ownedTopLevelKeys() {
   static const std::vector<std::string> keys{"mesh",       "geometry",      "gas",
@@ -15,6 +20,7 @@ const std::vector<std::string>& GasConfig::ownedTopLevelKeys() {
 }
 
 GasConfig GasConfig::fromFile(const std::string& path) {
+  checkNoDuplicateKeys(path);
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);
@@ -40,6 +46,12 @@ MeshSettings GasConfig::readMesh(const YamlSection& s) {
   m.origin = s.vec3("origin", Vec3::Zero(), Range::any());
   m.lengths = s.vec3("lengths", std::nullopt, Range::positive());
   m.cells = s.int3("cells", 1, 100000);
+  // Every rank holds about 24 bytes per background cell of index maps (mesh builder, mesh, the coupling's
+  // owner map) and global cell ids are int: refuse before allocating (cfd/README.md, mesh).
+  const double total = 1.0 * m.cells[0] * m.cells[1] * m.cells[2];
+  if (total > kMaxBackgroundCells)
+    s.fail("cells", "has " + std::to_string(static_cast<long long>(total)) + " background cells; allowed are at "
+                    "most 1e8 in total (each rank holds about 24 bytes per background cell: 2.4 GB at 1e8)");
   m.ghostLayers = s.integer("ghost_layers", 2, 1, 5);
   if (s.has("partition_weights")) {
     for (const auto& item : s.listOfMaps("partition_weights")) {
@@ -76,7 +88,9 @@ Geometry GasConfig::readShapeList(const YamlSection& parent, const std::string& 
 GasProperties GasConfig::readGas(const YamlSection& s) {
   s.allowOnly({"density", "viscosity", "gravity"});
   GasProperties g;
-  g.density = s.number("density", std::nullopt, Range::leftOpen(0, 1e4));
+  // Any gas is denser than 1e-3 kg/m3 (air at 1 mbar); at 1e-300 the momentum matrix's time and convection
+  // terms vanish against round-off of its viscous part (cfd/README.md).
+  g.density = s.number("density", std::nullopt, Range::closed(1e-3, 1e4));
   g.viscosity = s.number("viscosity", std::nullopt, Range::leftOpen(0, 1e3));
   g.gravity = s.vec3("gravity", Vec3(0, 0, -9.81), Range::closed(-1e3, 1e3));
   return g;

@@ -3,8 +3,8 @@
 - fcc_pressure_profile.png: the time-averaged bulk density dp/(g dz) against height and the time-averaged
   pressure on the planes (paper, Figure 8), from averages.csv, with the bed height of its header line;
 - fcc_monitors.png: time series from monitors.csv: bed pressure drop against the bed's buoyant weight per
-  area, the parcels' mean height, pressures on a few planes, and the reinjection counters from log.liggghts
-  (cumulative out / in and pending; printed there by the case's thermo_style);
+  area, the parcels' mean height, pressures on a few planes, and the reinjection columns of monitors.csv
+  (cumulative out / in and pending; the panel stays empty for a run without them);
 - fcc_solids_fraction.png: the solids fraction on the vertical mid plane of the column at up to six field
   snapshots (paper, Figure 4);
 - fcc_averaged_fields.png: time-averaged solids fraction, gas speed and solids speed on the mid plane
@@ -68,17 +68,8 @@ if os.path.exists(averages_csv):
 # --- time series: monitors and reinjection --------------------------------------------------------------
 monitors = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
 t = np.array([float(r["time"]) for r in monitors])
-reinjection = []  # step, atoms, pending, out, in
-active = False
-for line in open(os.path.join(folder, "log.liggghts")):
-    parts = line.split()
-    if parts[:2] == ["Step", "Atoms"]:
-        active = parts[2:] == ["reinject"] * 3
-    elif active and len(parts) == 5 and parts[0].isdigit():
-        reinjection.append([float(x) for x in parts])
-    elif parts and not parts[0].isdigit():
-        active = False
-reinjection = np.array(reinjection)
+columns = ("reinjection_pending", "reinjected_out_total", "reinjected_in_total", "lost_parcels")
+reinjection = np.array([[float(r[c]) for c in columns] for r in monitors]) if columns[0] in monitors[0] else []
 plane_keys = [k for k in monitors[0] if k.startswith("p_z")]
 fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=False)
 axes[0].plot(t, [float(r["bed_pressure_drop"]) for r in monitors], lw=0.6, label="bed pressure drop")
@@ -94,21 +85,19 @@ axes[2].set_ylabel("pressure [kPa]")
 axes[2].set_xlabel("time [s]")
 axes[2].legend(fontsize=7, ncol=3)
 if len(reinjection):
-    steps = reinjection[:, 0] - reinjection[0, 0]
-    axes[3].plot(steps, reinjection[:, 3], label="cumulative out")
-    axes[3].plot(steps, reinjection[:, 4], "--", label="cumulative in")
-    axes[3].plot(steps, reinjection[:, 2], label="pending")
+    axes[3].plot(t, reinjection[:, 1], label="cumulative out")
+    axes[3].plot(t, reinjection[:, 2], "--", label="cumulative in")
+    axes[3].plot(t, reinjection[:, 0], label="pending")
     axes[3].legend(fontsize=8)
-axes[3].set_xlabel("DEM steps since the gas started")
+axes[3].set_xlabel("time [s]")
 axes[3].set_ylabel("parcels")
 fig.suptitle("psri_fcc_bubbling_bed: monitors")
 fig.tight_layout()
 save(fig, "fcc_monitors.png")
 if len(reinjection):
-    step, atoms, pending, out, back = reinjection[-1]
-    print(f"reinjection: {out:.0f} parcels out, {back:.0f} in, {pending:.0f} pending at the end; atoms + pending "
-          f"= {atoms + pending:.0f} (first line {reinjection[0, 1] + reinjection[0, 2]:.0f}; range over the run "
-          f"{(reinjection[:, 1] + reinjection[:, 2]).min():.0f}-{(reinjection[:, 1] + reinjection[:, 2]).max():.0f})")
+    pending, out, back, lost = reinjection[-1]
+    print(f"reinjection: {out:.0f} parcels out, {back:.0f} in, {pending:.0f} pending at the end "
+          f"(at most {reinjection[:, 0].max():.0f}); parcels lost {lost:.0f}")
 
 
 # --- mid-plane slices of the fields ---------------------------------------------------------------------

@@ -11,6 +11,7 @@
 
 #include "cfd/config_error.hpp"
 #include "cfd/internal_error.hpp"
+#include "blowup_guard.h"
 #include "command_line.h"
 #include "coupled_run.h"
 #include "liggghts_instance.h"
@@ -30,7 +31,8 @@ int runDem(const pc::CommandLine& cl) {
 }
 
 // User errors (cfd::ConfigError) are found by every rank alike, before any work: rank 0 reports them and
-// the run exits with code 2. An internal error is a bug: the rank that found it says so and stops all ranks.
+// the run exits with code 2; a diverged run (run/blowup_guard.h), found by all ranks alike, exits with 3.
+// An internal error is a bug: the rank that found it says so and stops all ranks.
 // Any other failure (a file that cannot be written) stops all ranks with its message.
 int runCase(const pc::CommandLine& cl) {
   int rank = 0, ranks = 1;
@@ -53,6 +55,9 @@ int runCase(const pc::CommandLine& cl) {
   } catch (const parcelflow::cfd::ConfigError& e) {
     if (rank == 0) std::cerr << "parcelflow: error in case '" << cl.case_folder << "': " << e.what() << "\n";
     return 2;
+  } catch (const pc::DivergedError& e) {
+    if (rank == 0) std::cerr << "parcelflow: error: " << e.what() << "\n";
+    return 3;
   } catch (const parcelflow::cfd::InternalError& e) {
     std::cerr << "parcelflow: rank " << rank << ": " << e.what()
               << "\nparcelflow: this is a bug in parcelflow, not in your case; please report it with the case\n";

@@ -8,8 +8,10 @@
 #include <filesystem>
 
 #include "cfd/config_error.hpp"
+#include "contact_time_check.h"
 #include "lammps.h"
 #include "liggghts_instance.h"
+#include "script_variables.h"
 #include "update.h"
 
 namespace parcelflow::coupling {
@@ -35,6 +37,9 @@ DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::st
         throw cfd::ConfigError("liggghts.variables." + name, value,
                                std::string("a name other than dem_step, restarting and restart_file: parcelflow sets ") +
                                    reserved + " itself");
+  std::vector<std::string> passed(std::begin(kReservedVariables), std::end(kReservedVariables));
+  for (const auto& variable : settings.liggghts.variables) passed.push_back(variable.first);
+  checkScriptVariables(case_folder, settings.liggghts.script, passed);
 }
 
 DemEngine::~DemEngine() = default;
@@ -58,6 +63,15 @@ void DemEngine::start(const std::string& restart_file) {
                            " s but the LIGGGHTS script sets timestep " + exactNumber(script_dt) +
                            " s; use `timestep ${dem_step}` in the script");
   parcels_ = std::make_unique<DemParcels>(lammps_->lammps());
+  if (parcels_->globalCount() == 0)
+    throw cfd::ConfigError("liggghts.script", settings_.liggghts.script,
+                           "a script that inserts at least one parcel (LIGGGHTS has none when it ends)");
+  const std::string contact = checkContactTime(lammps_->lammps(), time.dem_step);
+  int rank = 0;
+  MPI_Comm_rank(world_, &rank);
+  if (rank == 0 && !contact.empty())
+    std::printf("parcelflow: DEM step %g s; %s (allowed: at least %.0f)\n", time.dem_step, contact.c_str(),
+                kStepsPerContact);
   lammps_->quietCommand("run 0 post no");
 }
 

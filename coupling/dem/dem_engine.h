@@ -24,13 +24,15 @@ class LiggghtsInstance;
 
 class DemEngine {
  public:
-  // Validates the settings (reserved variable names) before LIGGGHTS starts; throws cfd::ConfigError.
+  // Validates the settings (reserved variable names, undefined variables of the script) before LIGGGHTS
+  // starts; throws cfd::ConfigError.
   DemEngine(MPI_Comm world, const CaseSettings& settings, const std::string& case_folder,
             const std::string& log_file);
   ~DemEngine();
 
-  // Runs the script (a fresh start, or `restart_file` non-empty: continue from it), checks the time step,
-  // finds the parcel fixes and runs `run 0` (neighbour lists built, forces at hand for the first chunk).
+  // Runs the script (a fresh start, or `restart_file` non-empty: continue from it), checks the time step
+  // (against the script's and the contact time, contact_time_check.h), finds the parcel fixes, refuses a
+  // script that inserted no parcel and runs `run 0` (neighbour lists built, forces at hand for the first chunk).
   void start(const std::string& restart_file = {});
 
   DemParcels& parcels() { return *parcels_; }

@@ -3,15 +3,19 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 
 #include "atom.h"
 #include "cfd/config_error.hpp"
 #include "fix_parcel.h"
 #include "fix_parcel_implicit_drag.h"
+#include "fix_parcel_reinject.h"
 #include "lammps.h"
 #include "modify.h"
+#include "update.h"
 
 namespace parcelflow::coupling {
 
@@ -19,6 +23,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The one fix of `style`; none is an error naming `why` unless why is null (an optional fix).
 template <class FixType>
 FixType* findFixOfStyle(LAMMPS_NS::LAMMPS* lmp, const char* style, const char* why) {
   FixType* found = nullptr;
@@ -29,7 +34,7 @@ FixType* findFixOfStyle(LAMMPS_NS::LAMMPS* lmp, const char* style, const char* w
                              "`; a coupled run needs exactly one");
     found = dynamic_cast<FixType*>(lmp->modify->fix[i]);
   }
-  if (!found)
+  if (!found && why)
     throw cfd::ConfigError(std::string("the LIGGGHTS script must define `fix ID group ") + style + " ...` (" + why +
                            "); see liggghts_plugins/README.md");
   return found;
@@ -41,6 +46,7 @@ DemParcels::DemParcels(LAMMPS_NS::LAMMPS* lmp) : lmp_(lmp) {
   parcel_ = findFixOfStyle<plugins::FixParcel>(lmp, "parcel", "it gives every parcel its dp and np");
   drag_ = findFixOfStyle<plugins::FixParcelImplicitDrag>(lmp, "parcel/implicit_drag",
                                                           "it integrates the parcels with the gas drag");
+  reinject_ = findFixOfStyle<plugins::FixParcelReinject>(lmp, "parcel/reinject", nullptr);
 }
 
 ParcelBatch DemParcels::read() {
@@ -57,7 +63,27 @@ ParcelBatch DemParcels::read() {
     np_[i] = parcel_->np(i);
     id_[i] = static_cast<long>(atom->tag[i]);
   }
+  checkFinite();
   return {static_cast<std::size_t>(n), x_.data(), v_.data(), dp_.data(), np_.data()};
+}
+
+void DemParcels::checkFinite() const {
+  static const char* const kWhat[] = {"position", "velocity", "dp", "np"};
+  for (std::size_t i = 0; i < id_.size(); ++i) {
+    const double* values[] = {&x_[3 * i], &v_[3 * i], &dp_[i], &np_[i]};
+    for (int q = 0; q < 4; ++q) {
+      const int n = q < 2 ? 3 : 1;
+      bool finite = true;
+      for (int k = 0; k < n; ++k) finite = finite && std::isfinite(values[q][k]);
+      if (finite) continue;
+      char text[320];
+      std::snprintf(text, sizeof text, "parcel %ld has a non-finite %s (%g, %g, %g) at DEM step %ld (LIGGGHTS time "
+                    "%g s): the DEM state diverged or the script set it; the run stops", id_[i], kWhat[q],
+                    values[q][0], n == 3 ? values[q][1] : 0.0, n == 3 ? values[q][2] : 0.0,
+                    static_cast<long>(lmp_->update->ntimestep), lmp_->update->ntimestep * lmp_->update->dt);
+      throw std::runtime_error(text);
+    }
+  }
 }
 
 void DemParcels::write(const GasAtParcels& gas) {
@@ -75,7 +101,10 @@ void DemParcels::write(const GasAtParcels& gas) {
 
 void DemParcels::keepForcesForRestart() { drag_->keepForcesForRestart(); }
 
-long DemParcels::globalCount() const { return static_cast<long>(lmp_->atom->natoms); }
+long DemParcels::globalCount() const {
+  const long pending = reinject_ ? std::lround(reinject_->counter(plugins::FixParcelReinject::PENDING_N)) : 0;
+  return static_cast<long>(lmp_->atom->natoms) + pending;
+}
 
 int DemParcels::ntypes() const { return lmp_->atom->ntypes; }
 

@@ -9,7 +9,7 @@
 #include "parcel_mesh_coupler.h"
 
 namespace LAMMPS_NS { class LAMMPS; }
-namespace parcelflow::plugins { class FixParcel; class FixParcelImplicitDrag; }
+namespace parcelflow::plugins { class FixParcel; class FixParcelImplicitDrag; class FixParcelReinject; }
 
 namespace parcelflow::coupling {
 
@@ -19,6 +19,8 @@ class DemParcels {
   explicit DemParcels(LAMMPS_NS::LAMMPS* lmp);
 
   // Copies the local parcels; the batch points into this object and stays valid until the next read.
+  // A non-finite position, velocity, dp or np throws std::runtime_error naming the parcel id, the value
+  // and the DEM step (only the rank that holds the parcel knows: it stops all ranks).
   ParcelBatch read();
   // Sets kappa, u_f and the pressure force -np V_p grad p of the parcels of the last read().
   void write(const GasAtParcels& gas);
@@ -28,7 +30,10 @@ class DemParcels {
   // The forces the next DEM step starts from go into the next restart file and back at the next setup.
   void keepForcesForRestart();
 
+  // Parcels in the run: LIGGGHTS' atoms and those `fix parcel/reinject` holds pending.
   long globalCount() const;
+  // The script's `fix parcel/reinject`, or null.
+  const plugins::FixParcelReinject* reinjection() const { return reinject_; }
   int ntypes() const;
   // Mass-weighted mean height of each atom type (index type-1); NaN for an empty type. Collective.
   std::vector<double> meanHeightPerType() const;
@@ -37,9 +42,12 @@ class DemParcels {
   double buoyantWeightAbove(double z, double gas_density, double gravity) const;
 
  private:
+  void checkFinite() const;
+
   LAMMPS_NS::LAMMPS* lmp_;
   plugins::FixParcel* parcel_ = nullptr;
   plugins::FixParcelImplicitDrag* drag_ = nullptr;
+  plugins::FixParcelReinject* reinject_ = nullptr;
   std::vector<double> x_, v_, dp_, np_;
   std::vector<int> type_;
   std::vector<long> id_;

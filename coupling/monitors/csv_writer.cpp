@@ -27,6 +27,7 @@ CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& co
   if (!is_writer_rank) return;
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  unbuffered();
   put(headerLine(columns));
 }
 
@@ -49,6 +50,7 @@ CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& co
   if (truncate(path.c_str(), bytes) != 0) throw std::runtime_error("cannot cut '" + path + "': " + std::strerror(errno));
   file_ = std::fopen(path.c_str(), "a");
   if (!file_) throw std::runtime_error("cannot append to '" + path + "': " + std::strerror(errno));
+  unbuffered();
   bytes_ = bytes;
 }
 
@@ -56,13 +58,19 @@ CsvWriter::~CsvWriter() {
   if (file_) std::fclose(file_);
 }
 
+// Every row goes to the file at once, so after a failed write no part of it waits in a buffer that a later
+// flush (at exit) could append behind the cut.
+void CsvWriter::unbuffered() { std::setvbuf(file_, nullptr, _IONBF, 0); }
+
 void CsvWriter::put(const std::string& text) {
   if (std::fputs(text.c_str(), file_) < 0 || std::fflush(file_) != 0) {
     const int error = errno;
-    // Keep only complete rows: cut what part of this one reached the file.
-    if (ftruncate(fileno(file_), bytes_) != 0) {
-    }
-    throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(error));
+    // Keep only complete rows: cut what part of this one reached the file (if even that fails, the message
+    // says so).
+    const bool cut = ftruncate(fileno(file_), bytes_) == 0;
+    throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(error) +
+                             (cut ? "; it keeps its complete rows (" : "; cutting it back to its complete rows (") +
+                             std::to_string(bytes_) + (cut ? " bytes)" : " bytes) failed too"));
   }
   bytes_ += static_cast<long>(text.size());
 }

@@ -27,6 +27,7 @@ class CsvWriter {
   long rows() const { return rows_; }
 
  private:
+  void unbuffered();
   void put(const std::string& text);
   std::string path_;
   std::size_t ncolumns_;

@@ -1,11 +1,14 @@
 #include "case_reader.h"
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 
 #include "cfd/config_error.hpp"
 #include "drag_law.hpp"
+#include "cfd/yaml_duplicate_keys.hpp"
 #include "cfd/yaml_section.hpp"
 
 namespace parcelflow::coupling {
@@ -17,6 +20,15 @@ using cfd::YamlSection;
 namespace {
 
 const std::vector<std::string> kCouplingTopLevelKeys = {"liggghts", "time", "coupling", "output", "monitors"};
+// More DEM steps per gas step than this is a mistake in the steps' units (and near INT_MAX an overflow).
+constexpr double kMaxDemStepsPerGasStep = 1e6;
+constexpr double kMinGasFractionFloor = 0.01;
+
+std::string numberText(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
 
 LiggghtsSettings readLiggghts(const YamlSection& s) {
   s.allowOnly({"script", "variables"});
@@ -39,14 +51,31 @@ TimeSettings readTime(const YamlSection& s) {
   if (ratio < 0.5 || std::abs(ratio - std::round(ratio)) > 1e-6 * ratio)
     s.fail("gas_step", "is " + std::to_string(ratio) + " DEM steps (time.dem_step = " + std::to_string(t.dem_step) +
                            "); it must be a whole number of DEM steps, at least 1");
+  if (ratio > kMaxDemStepsPerGasStep)
+    s.fail("gas_step", "is " + numberText(ratio) + " DEM steps (time.dem_step = " + numberText(t.dem_step) +
+                           "); allowed are at most 1e6 DEM steps per gas step");
+  if (t.gas_step > t.end * (1.0 + 1e-9))
+    s.fail("gas_step", "is longer than time.end = " + numberText(t.end) + " s; allowed is gas_step <= end");
   return t;
 }
 
+GuardSettings readGuards(const YamlSection& s) {
+  s.allowOnly({"max_cfl", "max_continuity_error", "max_parcel_loss"});
+  GuardSettings g;
+  g.max_cfl = s.number("max_cfl", g.max_cfl, Range::positive());
+  g.max_continuity_error = s.number("max_continuity_error", g.max_continuity_error, Range::positive());
+  g.max_parcel_loss = s.number("max_parcel_loss", g.max_parcel_loss, Range{0.0, 1.0, true, false});
+  return g;
+}
+
 CouplingSettings readCoupling(const YamlSection& s) {
-  s.allowOnly({"drag", "kernel", "gas_fraction_floor"});
+  s.allowOnly({"drag", "kernel", "gas_fraction_floor", "guards"});
   CouplingSettings c;
   c.drag = s.word("drag", c.drag, dragLawNames());
-  c.gas_fraction_floor = s.number("gas_fraction_floor", c.gas_fraction_floor, Range{0.0, 1.0, true, true});
+  // Below 0.01 over-filled cells give the gas Courant numbers of 100 and more (coupling/README.md).
+  c.gas_fraction_floor =
+      s.number("gas_fraction_floor", c.gas_fraction_floor, Range{kMinGasFractionFloor, 1.0, false, true});
+  if (s.has("guards")) c.guards = readGuards(s.map("guards"));
   if (s.has("kernel")) {
     const YamlSection k = s.map("kernel");
     if (k.has("width"))
@@ -116,7 +145,9 @@ CaseSettings readCouplingSettings(const YAML::Node& root) {
 
 CaseDefinition readCase(const std::string& case_folder) {
   const std::string path = case_folder + "/case.yaml";
-  if (!std::ifstream(path)) throw ConfigError("cannot read '" + path + "': a case folder must contain case.yaml");
+  if (!std::filesystem::is_regular_file(path) || !std::ifstream(path))
+    throw ConfigError("cannot read '" + path + "': a case folder must contain case.yaml, a readable file");
+  cfd::checkNoDuplicateKeys(path);
   YAML::Node root;
   try {
     root = YAML::LoadFile(path);
@@ -131,6 +162,15 @@ CaseDefinition readCase(const std::string& case_folder) {
   if (!std::ifstream(script))
     throw ConfigError("liggghts.script: cannot read '" + script + "' (path relative to the case folder)");
   return c;
+}
+
+void applyEndTime(TimeSettings& time, double end, double start) {
+  const double value = end > 0.0 ? end : time.end;
+  if (value < start + time.gas_step * (1.0 - 1e-9))
+    throw ConfigError(end > 0.0 ? "--end" : "time.end", numberText(value) + " s",
+                      "at least one gas step (time.gas_step = " + numberText(time.gas_step) + " s)" +
+                          (start > 0.0 ? " after the checkpoint's time " + numberText(start) + " s" : ""));
+  time.end = value;
 }
 
 int TimeSettings::demStepsPerGasStep() const { return static_cast<int>(std::lround(gas_step / dem_step)); }

@@ -18,6 +18,9 @@ struct CaseDefinition {
 
 CaseDefinition readCase(const std::string& case_folder);
 
+// Replaces time.end by `end` when > 0 (--end) and checks that at least one gas step follows `start`.
+void applyEndTime(TimeSettings& time, double end, double start = 0.0);
+
 // The coupling part alone, from an already parsed case.yaml (also rejects unknown top-level keys).
 CaseSettings readCouplingSettings(const YAML::Node& root);
 

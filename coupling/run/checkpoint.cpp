@@ -22,9 +22,11 @@ namespace {
 const char* const kStepPrefix = "step_";
 const char* const kPartialPrefix = ".partial_step_";
 
-// Keys a restart may change: when to stop, what and how often to write, how hard the solvers iterate.
+// Keys a restart may change: when to stop, what and how often to write, how hard the solvers iterate, when
+// the blow-up guard stops.
 bool mayChangeOnRestart(const std::string& key) {
-  return key == "time.end" || key.rfind("output.", 0) == 0 || key.rfind("solver.", 0) == 0;
+  return key == "time.end" || key.rfind("output.", 0) == 0 || key.rfind("solver.", 0) == 0 ||
+         key.rfind("coupling.guards.", 0) == 0;
 }
 
 void flatten(const YAML::Node& node, const std::string& prefix, std::map<std::string, std::string>& out) {
@@ -223,7 +225,7 @@ void checkSameSettings(const Checkpoint& checkpoint, const std::map<std::string,
     if (!checkpoint.settings.count(key)) note(key, "", value);
   if (!differences.empty())
     throw ConfigError("--restart " + checkpoint.paths.folder + ": the case's settings differ from the checkpoint's "
-                      "(only time.end, output.* and solver.* may change on a restart):" +
+                      "(only time.end, output.*, solver.* and coupling.guards.* may change on a restart):" +
                       differences);
 }
 

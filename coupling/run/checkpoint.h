@@ -31,7 +31,7 @@ struct LoopState {
 };
 
 // The settings of case.yaml that a restart must not change, flattened to "key.path" -> value text: all of it
-// but time.end, the output keys and the solver's iteration controls.
+// but time.end, the output keys, the solver's iteration controls and the blow-up guard's limits.
 std::map<std::string, std::string> restartRelevantSettings(const std::string& case_yaml);
 
 struct CheckpointPaths {

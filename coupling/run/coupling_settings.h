@@ -28,10 +28,19 @@ struct KernelSettings {
   int radius = 2;                 // stencil half-width in cells
 };
 
+// Limits beyond which a run counts as diverged (run/blowup_guard.h); the defaults are far above what the
+// shipped cases reach (coupling/README.md, "Blow-up guards").
+struct GuardSettings {
+  double max_cfl = 1000.0;              // gas Courant number of a step
+  double max_continuity_error = 1.0;    // StepReport::continuityError of a step (relative to the through-flow)
+  double max_parcel_loss = 0.1;         // parcels lost in one coupling step, as a fraction of the initial count
+};
+
 struct CouplingSettings {
   std::string drag = "WenYu";
   KernelSettings kernel;
   double gas_fraction_floor = 0.35;  // a_g is never below this; every hit is counted and reported
+  GuardSettings guards;
 };
 
 struct OutputSettings {

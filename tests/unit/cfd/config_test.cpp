@@ -3,11 +3,16 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
 #include <string>
 
 #include "cfd/config_error.hpp"
 #include "cfd/gas_config.hpp"
 #include "cfd/gas_solver.hpp"
+#include "cfd/yaml_duplicate_keys.hpp"
 
 using namespace parcelflow::cfd;
 
@@ -114,7 +119,7 @@ TEST(GasConfig, UnknownKeysAreNamed) {
 
 TEST(GasConfig, WrongTypesAreNamed) {
   expectError(errorOf(replaced("  density: 1.2", "  density: heavy")),
-              {"gas.density", "heavy", "a number in (0, 10000]"});
+              {"gas.density", "heavy", "a number in [0.001, 10000]"});
   expectError(errorOf(replaced("  cells: [4, 4, 20]", "  cells: [4, 4]")),
               {"mesh.cells", "a list of 3 integers"});
   expectError(errorOf(replaced("  gravity: [0, 0, -9.81]", "  gravity: down")),
@@ -139,6 +144,37 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
               {"solver.momentum.preconditioner", "jacobi"});
   expectError(errorOf(replaced("min: [0, 0, 0], max: [0.2, 0.2, 0.5]", "min: [0, 0, 0], max: [0.2, 0, 0.5]")),
               {"max", "larger than min"});
+}
+
+TEST(GasConfig, RangesTheSolverCannotHonourAreRefused) {
+  expectError(errorOf(replaced("  density: 1.2", "  density: 1.0e-300")),
+              {"gas.density = 1.0e-300", "[0.001, 10000]"});
+  // Refused before the mesh is allocated (1e15 cells).
+  expectError(errorOf(replaced("  cells: [4, 4, 20]", "  cells: [100000, 100000, 100000]")),
+              {"mesh.cells", "1000000000000000 background cells", "at most 1e8"});
+}
+
+// A key given twice in one map is named with both lines (yaml-cpp's node API keeps the first silently).
+TEST(GasConfig, DuplicatedKeysAreNamedWithBothLines) {
+  char path[] = "/tmp/pf_config_test_XXXXXX";
+  const int fd = mkstemp(path);
+  ASSERT_GE(fd, 0);
+  close(fd);
+  const auto errorOfFile = [&](const std::string& text) {
+    std::ofstream(path) << text;
+    try {
+      checkNoDuplicateKeys(path);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  expectError(errorOfFile("a: 1\nb:\n  c: 2\n  d: [1, {e: 1, f: 2}]\n  c: 3\n"),
+              {"b.c is given twice", "lines 3 and 5"});
+  expectError(errorOfFile("a: 1\nlist:\n  - {x: 1}\n  - {x: 2, x: 3}\n"), {"list[1].x", "lines 4 and 4"});
+  expectError(errorOfFile("a: 1\nb: 2\na: 3\n"), {"a is given twice", "lines 1 and 3"});
+  EXPECT_EQ(errorOfFile("a: {x: 1}\nb: {x: 1}\nc: [{x: 1}, {x: 2}]\n"), "");
+  std::remove(path);
 }
 
 TEST(GasConfig, PatchesAreCheckedAgainstTheMesh) {

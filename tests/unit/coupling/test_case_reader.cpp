@@ -62,3 +62,44 @@ time: {end: 1.0, gas_step: 2.5e-4, dem_step: 1.0e-4}
     expectMentions(e.what(), {"time.gas_step", "2.5", "whole number of DEM steps"});
   }
 }
+
+TEST(CaseReader, TimeStepsThatMisleadAreRefused) {
+  const auto timeError = [](const std::string& time) {
+    try {
+      pc::readCouplingSettings(YAML::Load("liggghts: {script: bed.in}\ntime: " + time + "\n"));
+    } catch (const parcelflow::cfd::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  expectMentions(timeError("{end: 1.0e-4, gas_step: 2.0e-4, dem_step: 2.0e-5}"), {"time.gas_step", "gas_step <= end"});
+  // 2^32 DEM steps per gas step (an int would overflow to 0).
+  expectMentions(timeError("{end: 1.0e6, gas_step: 85899.34592, dem_step: 2.0e-5}"),
+                 {"time.gas_step", "4.29497e+09 DEM steps", "at most 1e6"});
+  pc::TimeSettings t = pc::readCouplingSettings(YAML::Load(kValid)).time;
+  pc::applyEndTime(t, 0.5);
+  EXPECT_DOUBLE_EQ(t.end, 0.5);
+  try {
+    pc::applyEndTime(t, 1e-300);
+    FAIL() << "no error raised";
+  } catch (const parcelflow::cfd::ConfigError& e) {
+    expectMentions(e.what(), {"--end = 1e-300", "at least one gas step"});
+  }
+  try {
+    pc::applyEndTime(t, 0.0, 0.5);  // continuing a checkpoint at t = 0.5 s
+    FAIL() << "no error raised";
+  } catch (const parcelflow::cfd::ConfigError& e) {
+    expectMentions(e.what(), {"time.end = 0.5", "after the checkpoint's time 0.5"});
+  }
+}
+
+TEST(CaseReader, GuardsAndFloor) {
+  const pc::CaseSettings s = pc::readCouplingSettings(YAML::Load(std::string(kValid) +
+                                                                 "coupling: {guards: {max_cfl: 50}}\n"));
+  EXPECT_DOUBLE_EQ(s.coupling.guards.max_cfl, 50.0);
+  EXPECT_DOUBLE_EQ(s.coupling.guards.max_continuity_error, 1.0);
+  EXPECT_DOUBLE_EQ(s.coupling.guards.max_parcel_loss, 0.1);
+  expectMentions(errorOf("coupling: {guards: {max_parcel_loss: 0}}\n"), {"coupling.guards.max_parcel_loss", "(0, 1]"});
+  expectMentions(errorOf("coupling: {guards: {max_cfll: 5}}\n"), {"coupling.guards.max_cfll"});
+  expectMentions(errorOf("coupling: {gas_fraction_floor: 1.0e-300}\n"), {"coupling.gas_fraction_floor", "[0.01, 1)"});
+}

@@ -1,0 +1,17 @@
+// LIGGGHTS stops on an undefined variable without naming it. Before it starts, this scans the case's
+// script, and the files it `include`s by a plain name, for ${name} and $x references and checks that each
+// name is defined by a `variable` command somewhere in those files (also inside an `if`'s quoted
+// commands) or passed from outside (liggghts.variables and parcelflow's own).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace parcelflow::coupling {
+
+// `script` is opened from `folder` (LIGGGHTS runs there); throws cfd::ConfigError naming the variable,
+// the file and the line of its first reference.
+void checkScriptVariables(const std::string& folder, const std::string& script,
+                          const std::vector<std::string>& passed);
+
+}  // namespace parcelflow::coupling

@@ -1,0 +1,65 @@
+#include "run_warnings.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace parcelflow::coupling {
+
+RunWarnings::RunWarnings(MPI_Comm comm, const cfd::Mesh& mesh, const CellOwnerMap& owners, long parcels,
+                         double absolute_tolerance)
+    : comm_(comm), mesh_(mesh), owners_(owners), parcels_(parcels), absolute_tolerance_(absolute_tolerance) {
+  MPI_Comm_rank(comm, &rank_);
+}
+
+void RunWarnings::checkOutsideMesh(const ParcelBatch& batch, const std::vector<long>& ids, long parcels) {
+  const cfd::CartesianBackground& bg = mesh_.background();
+  long outside = 0;
+  double example[4] = {0.0, 0.0, 0.0, 0.0};  // id, x, y, z of this rank's first one
+  for (std::size_t p = 0; p < batch.size; ++p) {
+    int ijk[3];
+    for (int d = 0; d < 3; ++d)
+      ijk[d] = static_cast<int>(std::floor((batch.x[3 * p + d] - bg.origin()[d]) / bg.spacing()[d]));
+    if (bg.inside(ijk[0], ijk[1], ijk[2]) && owners_.ownerRank(bg.index(ijk[0], ijk[1], ijk[2])) >= 0) continue;
+    if (outside++ > 0) continue;
+    example[0] = static_cast<double>(ids[p]);
+    for (int d = 0; d < 3; ++d) example[1 + d] = batch.x[3 * p + d];
+  }
+  long total = 0;
+  MPI_Allreduce(&outside, &total, 1, MPI_LONG, MPI_SUM, comm_);
+  if (total == 0) return;
+  struct { int has; int rank; } mine{outside > 0 ? 1 : 0, rank_}, first{};
+  MPI_Allreduce(&mine, &first, 1, MPI_2INT, MPI_MAXLOC, comm_);
+  MPI_Bcast(example, 4, MPI_DOUBLE, first.rank, comm_);
+  if (rank_ == 0)
+    std::printf("parcelflow: warning: %s%ld of %ld parcels have their centre in no fluid cell of the gas mesh at "
+                "the first coupling step (e.g. parcel %.0f at (%g, %g, %g)); they feel the gas only through the fluid "
+                "cells their kernel reaches, and none if it reaches none (column `orphans` of monitors.csv); compare "
+                "the LIGGGHTS regions with mesh.origin, mesh.lengths and geometry\n",
+                total == parcels ? "all: " : "", total, parcels, example[0], example[1], example[2], example[3]);
+}
+
+void RunWarnings::afterGasStep(const ParcelBatch& batch, const std::vector<long>& ids,
+                               const cfd::StepReport& report, long parcels, double time, long step) {
+  if (first_) checkOutsideMesh(batch, ids, parcels_);
+  first_ = false;
+  if (parcels < parcels_ && rank_ == 0)
+    std::printf("parcelflow: warning: t = %g s (step %ld): %ld parcels lost in the last DEM advance, %ld left%s\n",
+                time, step,
+                parcels_ - parcels, parcels, parcels == 0 ? ": every parcel is lost" : "");
+  parcels_ = parcels;
+  if (report.unconvergedSolves > 0 && unconverged_steps_++ % kUnconvergedEvery == 0 && rank_ == 0)
+    std::printf("parcelflow: warning: t = %g s (step %ld): %d linear solves stopped at max_iterations without "
+                "converging (%ld steps with such solves so far; see solver.pressure / solver.momentum in "
+                "cfd/README.md)\n",
+                time, step, report.unconvergedSolves, unconverged_steps_);
+  if (report.pressureIterations == 0 && !warned_no_iterations_) {
+    warned_no_iterations_ = true;
+    if (rank_ == 0)
+      std::printf("parcelflow: warning: t = %g s (step %ld): the pressure solve did no iteration: its residual was "
+                  "already below max(tolerance |b|, solver.pressure.absolute_tolerance = %g); a loose "
+                  "absolute_tolerance leaves the pressure unsolved\n",
+                  time, step, absolute_tolerance_);
+  }
+}
+
+}  // namespace parcelflow::coupling

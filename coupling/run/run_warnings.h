@@ -1,0 +1,42 @@
+// Warnings printed on the terminal at the step where a problem starts, not only in the closing summary:
+// parcels whose centre is in no fluid cell (at the first coupling step), parcels lost (at the first step
+// after the DEM advance that lost them), pressure or momentum solves stopped at max_iterations (the first,
+// then every kUnconvergedEvery-th such step) and a pressure solve that did no iteration (its absolute
+// tolerance is above the residual). The coupled loop calls afterGasStep() once per step, on all ranks,
+// before the blow-up guard, so that a warning about the cause comes before the guard's stop.
+#pragma once
+
+#include <mpi.h>
+
+#include "cfd/gas_solver.hpp"
+#include "cell_owner_map.h"
+#include "parcel_mesh_coupler.h"
+#include "run_counters.h"
+
+namespace parcelflow::coupling {
+
+class RunWarnings {
+ public:
+  static constexpr long kUnconvergedEvery = 100;
+
+  RunWarnings(MPI_Comm comm, const cfd::Mesh& mesh, const CellOwnerMap& owners, long parcels,
+              double absolute_tolerance);
+
+  // `batch`: the parcels at the start of the step (their ids in `ids`); time and step at its end. Collective.
+  void afterGasStep(const ParcelBatch& batch, const std::vector<long>& ids, const cfd::StepReport& report,
+                 long parcels, double time, long step);
+
+ private:
+  void checkOutsideMesh(const ParcelBatch& batch, const std::vector<long>& ids, long parcels);
+
+  MPI_Comm comm_;
+  int rank_ = 0;
+  const cfd::Mesh& mesh_;
+  const CellOwnerMap& owners_;
+  long parcels_;
+  double absolute_tolerance_;
+  bool first_ = true, warned_no_iterations_ = false;
+  long unconverged_steps_ = 0;
+};
+
+}  // namespace parcelflow::coupling

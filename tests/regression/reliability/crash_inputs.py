@@ -1,0 +1,52 @@
+"""Inputs that used to crash (uncaught exceptions, segfaults, aborts) now stop with a message naming the key or
+file, the value and what is allowed: exit code 2 for user errors, before any work; a non-finite parcel value
+found during the run stops all ranks with the parcel's id, the value and the time (exit code != 0)."""
+import os
+
+from reliability_runs import expect, main
+
+
+def unwritable_output(runs):
+    case = runs.case()
+    for folder in ("/proc/pf_reliability_x", "/dev/null/x"):
+        expect(f"--output {folder}", runs.run(case, output=folder), 2, "--output", folder, "can be created")
+
+
+def case_yaml_is_a_folder(runs):
+    case = runs.case()
+    os.remove(os.path.join(case, "case.yaml"))
+    os.mkdir(os.path.join(case, "case.yaml"))
+    expect("case.yaml that is a folder", runs.run(case), 2, "case.yaml", "readable file")
+
+
+def end_below_one_gas_step(runs):
+    expect("--end 1e-300", runs.run(runs.case(), end=1e-300), 2, "--end", "1e-300", "at least one gas step")
+
+
+def values_the_solver_cannot_honour(runs):
+    cases = [("mesh.cells [100000]^3", lambda s: s["mesh"].update(cells=[100000] * 3), ["mesh.cells", "1e8"]),
+             ("gas.density 1e-300", lambda s: s["gas"].update(density=1e-300), ["gas.density", "[0.001, 10000]"]),
+             ("gas_fraction_floor 1e-300", lambda s: s["coupling"].update(gas_fraction_floor=1e-300),
+              ["coupling.gas_fraction_floor", "[0.01, 1)"])]
+    for what, edit, words in cases:
+        expect(what, runs.run(runs.case(edit)), 2, *words)
+
+
+def undefined_script_variable(runs):
+    def script(text):
+        return text.replace("neigh_modify    delay 0",
+                            "neigh_modify    delay 0\nvariable        spare equal ${no_such_value}*2")
+    case = runs.case(script=script)
+    line = next(n for n, l in enumerate(open(os.path.join(case, "column.in")), 1) if "no_such_value" in l)
+    expect("undefined ${no_such_value}", runs.run(case), 2, "no_such_value", f"column.in line {line}")
+
+
+def infinite_parcel_velocity(runs):
+    case = runs.case(script=lambda text: text + "set atom 7 vx 1e400\n")
+    expect("parcel 7 with an infinite velocity", runs.run(case), None, "parcel 7 has a non-finite velocity", "inf",
+           "DEM step")
+
+
+if __name__ == "__main__":
+    main([unwritable_output, case_yaml_is_a_folder, end_below_one_gas_step, values_the_solver_cannot_honour,
+          undefined_script_variable, infinite_parcel_velocity])
