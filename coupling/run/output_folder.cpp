@@ -31,25 +31,29 @@ std::string makeWritable(const fs::path& folder) {
   return written ? "" : "cannot be written";
 }
 
-// Removes the earlier run's outputs; returns a warning naming what was there ("" if nothing).
-std::string removeStaleOutput(const fs::path& folder) {
-  std::vector<fs::path> stale;
-  for (const auto& entry : fs::directory_iterator(folder))
-    if (std::regex_match(entry.path().filename().string(), kStaleOutput)) stale.push_back(entry.path());
-  const std::string overwritten = fs::exists(folder / "monitors.csv") ? "; its monitors.csv is overwritten" : "";
-  if (stale.empty())
-    return overwritten.empty() ? "" : folder.string() + " held an earlier run's output" + overwritten;
+// Moves the earlier run's outputs (and its monitors.csv) into folder/earlier_run_<k>/, the first free k, so
+// that nothing written is lost; returns a warning naming what was there ("" if nothing).
+std::string moveEarlierRun(const fs::path& folder) {
+  std::vector<fs::path> earlier;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, kStaleOutput) || name == "monitors.csv") earlier.push_back(entry.path());
+  }
+  if (earlier.empty()) return "";
+  fs::path aside;
+  for (int k = 1; aside.empty() || fs::exists(aside); ++k) aside = folder / ("earlier_run_" + std::to_string(k));
+  fs::create_directory(aside);
   int snapshots = 0;
   std::string named;
-  for (const auto& path : stale) {
+  for (const auto& path : earlier) {
     const std::string name = path.filename().string();
     if (name.find('_') != std::string::npos && path.extension() == ".h5") ++snapshots;
     else named += (named.empty() ? "" : ", ") + name + (fs::is_directory(path) ? "/" : "");
-    fs::remove_all(path);
+    fs::rename(path, aside / name);
   }
-  return folder.string() + " held an earlier run's output: removed " + std::to_string(snapshots) +
+  return folder.string() + " held an earlier run's output: moved " + std::to_string(snapshots) +
          " snapshot files (fields_*.h5, parcels_*.h5, averages_*.h5)" + (named.empty() ? "" : " and " + named) +
-         overwritten + " (to continue a run use --restart instead)";
+         " to " + aside.string() + " (to continue a run use --restart instead)";
 }
 
 std::string broadcast(std::string text, MPI_Comm comm) {
@@ -76,14 +80,14 @@ void clearEarlierRun(const std::string& folder, MPI_Comm comm) {
   std::string removed, problem;
   if (rank == 0) {
     try {
-      removed = removeStaleOutput(folder);
+      removed = moveEarlierRun(folder);
     } catch (const fs::filesystem_error& e) {
       problem = e.what();
     }
   }
   problem = broadcast(problem, comm);
   if (!problem.empty())
-    throw std::runtime_error(folder + " holds an earlier run's output that cannot be removed: " + problem);
+    throw std::runtime_error(folder + " holds an earlier run's output that cannot be moved aside: " + problem);
   if (rank == 0 && !removed.empty()) std::printf("parcelflow: warning: %s\n", removed.c_str());
 }
 

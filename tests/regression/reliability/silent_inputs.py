@@ -57,13 +57,17 @@ def earlier_run_in_the_folder(runs):
     fresh = runs.case()
     result = runs.run(fresh, end=3 * GAS_STEP, output=out)
     text = expect("a fresh run in an earlier run's folder", result, 0, "held an earlier run's output",
-                  "removed 30 snapshot files", "checkpoints/", "parcels.xdmf")
+                  "moved 30 snapshot files", "checkpoints/", "parcels.xdmf", "earlier_run_1")
     if text.index("held an earlier run's output") > text.index("parcelflow: done"):
         fail("the warning must come at the start")
     if snapshots(out) != listed(out) or snapshots(out) != ["fields_000000.h5"]:
         fail(f"the folder holds {snapshots(out)}, the XDMF indexes list {listed(out)}")
     if os.path.exists(os.path.join(out, "checkpoints")) or os.path.exists(os.path.join(out, "parcels.xdmf")):
-        fail("the earlier run's checkpoints and parcels.xdmf must be gone")
+        fail("the earlier run's checkpoints and parcels.xdmf must have been moved aside")
+    aside = os.path.join(out, "earlier_run_1")
+    if len(glob.glob(os.path.join(aside, "*_0*.h5"))) != 30 or not os.path.isdir(os.path.join(aside, "checkpoints")) \
+            or not os.path.exists(os.path.join(aside, "monitors.csv")):
+        fail(f"the earlier run's files are not all in {aside}: {sorted(os.listdir(aside))}")
     print(f"[measured] after the fresh run the folder holds {snapshots(out)}, listed by the XDMF: {listed(out)}")
 
 
