@@ -1,6 +1,7 @@
 """What the Python test drivers share: running a program (a failure ends the test with its output) and
 running a copy of a case folder with edited settings. Drivers import it after putting tests/support on
 sys.path (see any driver's imports)."""
+import atexit
 import os
 import re
 import shutil
@@ -50,6 +51,7 @@ def copy_case(source, work, edit, prepare=lambda case: None):
 def run_case(parcelflow, launcher, source, edit, prepare=lambda case: None):
     """Runs an edited copy of case folder `source` in a new temporary folder; returns the output folder."""
     work = tempfile.mkdtemp(prefix="pf_verify_")
+    atexit.register(shutil.rmtree, work, True)  # the test reads the output until it ends
     case = copy_case(source, work, edit, prepare)
     out = os.path.join(work, "output")
     stdout = run(launcher + [parcelflow, "run", case, "--output", out])
