@@ -1,6 +1,6 @@
 // Everything a coupled run counts, in one place: clamps, floors, fallbacks and solver trouble are never
 // silent (DESIGN section 4). Each rank counts its own cells and parcels; the gas solver's counts are the
-// same on all ranks. The monitors, the summary and the checkpoint read the counters through fields(), so a
+// same on all ranks. The monitors and the checkpoint read the counters through perRank() and global(), so a
 // new counter is added here once.
 #pragma once
 
