@@ -30,7 +30,7 @@ class FieldWriter {
   void continueSeries(const std::vector<double>& times, const std::vector<std::string>& scalars,
                       const std::vector<std::string>& vectors);
   std::size_t snapshots() const { return snapshots_.size(); }
-  const std::vector<double> snapshotTimes() const {
+  std::vector<double> snapshotTimes() const {
     std::vector<double> t;
     for (const auto& s : snapshots_) t.push_back(s.time);
     return t;

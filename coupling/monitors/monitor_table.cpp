@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include "broadcast_text.h"
 #include "cfd/config_error.hpp"
 #include "cfd/internal_error.hpp"
 
@@ -27,12 +28,8 @@ MonitorTable::MonitorTable(std::vector<std::unique_ptr<Monitor>> monitors, const
   } catch (const cfd::ConfigError& e) {
     error = e.what();
   }
-  int length = static_cast<int>(error.size());
-  MPI_Allreduce(MPI_IN_PLACE, &length, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  if (length == 0) return;
-  error.resize(length);
-  MPI_Bcast(error.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
-  throw cfd::ConfigError(error);
+  error = broadcastText(error, 0, MPI_COMM_WORLD);  // only the writer rank (0) opened the file
+  if (!error.empty()) throw cfd::ConfigError(error);
 }
 
 void MonitorTable::sample(const MonitorInput& in) {

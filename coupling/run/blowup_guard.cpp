@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "broadcast_text.h"
+
 namespace parcelflow::coupling {
 
 namespace {
@@ -11,14 +13,6 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0, do
   char buf[256];
   std::snprintf(buf, sizeof buf, pattern, a, b, c, d);
   return buf;
-}
-
-std::string broadcast(std::string text, int root, MPI_Comm comm) {
-  int size = static_cast<int>(text.size());
-  MPI_Bcast(&size, 1, MPI_INT, root, comm);
-  text.resize(size);
-  MPI_Bcast(text.data(), size, MPI_CHAR, root, comm);
-  return text;
 }
 
 std::string at(const cfd::Mesh& mesh, int cell) {
@@ -43,7 +37,7 @@ std::string BlowupGuard::nonFiniteCell(const cfd::GasSolver& gas) const {
   }
   struct { int has; int rank; } mine{found.empty() ? 0 : 1, rank_}, first{};
   MPI_Allreduce(&mine, &first, 1, MPI_2INT, MPI_MAXLOC, comm_);
-  return first.has ? broadcast(found, first.rank, comm_) : std::string();
+  return first.has ? broadcastText(found, first.rank, comm_) : std::string();
 }
 
 std::string BlowupGuard::fastestCell(const cfd::GasSolver& gas) const {
@@ -57,7 +51,7 @@ std::string BlowupGuard::fastestCell(const cfd::GasSolver& gas) const {
     }
   MPI_Allreduce(&mine, &top, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_);
   const std::string where = rank_ == top.rank ? at(mesh, cell) : std::string();
-  return format("largest gas speed %g m/s", top.speed) + broadcast(where, top.rank, comm_);
+  return format("largest gas speed %g m/s", top.speed) + broadcastText(where, top.rank, comm_);
 }
 
 void BlowupGuard::check(const cfd::GasSolver* gas, const cfd::StepReport& report, long parcels, double time,

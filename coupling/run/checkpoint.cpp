@@ -9,6 +9,7 @@
 #include <fstream>
 #include <random>
 
+#include "broadcast_text.h"
 #include "cfd/config_error.hpp"
 #include "cfd/hdf5_file.hpp"
 
@@ -65,14 +66,6 @@ std::pair<long, std::string> fileDigest(const std::string& path) {
   return {size, hex};
 }
 
-std::string broadcast(std::string text, MPI_Comm comm) {
-  long n = static_cast<long>(text.size());
-  MPI_Bcast(&n, 1, MPI_LONG, 0, comm);
-  text.resize(n);
-  MPI_Bcast(text.data(), static_cast<int>(n), MPI_CHAR, 0, comm);
-  return text;
-}
-
 }  // namespace
 
 CheckpointPaths::CheckpointPaths(const std::string& f)
@@ -100,7 +93,7 @@ CheckpointDraft beginCheckpoint(const std::string& output_folder, long step, MPI
     fs::remove_all(root / (kPartialPrefix + std::string(name)));
     fs::create_directories(root / (kPartialPrefix + std::string(name)));
   }
-  id = broadcast(id, comm);
+  id = broadcastText(id, 0, comm);
   return {id, CheckpointPaths((root / (kPartialPrefix + std::string(name))).string()),
           CheckpointPaths((root / (kStepPrefix + std::string(name))).string())};
 }

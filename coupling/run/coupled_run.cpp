@@ -152,8 +152,7 @@ void CoupledRun::initialize() {
   s.warnings = std::make_unique<RunWarnings>(MPI_COMM_WORLD, mesh, *s.owners, s.loop.initial_parcels,
                                              s.case_def.gas.solver.pressure.absTolerance);
   s.guard = std::make_unique<BlowupGuard>(MPI_COMM_WORLD, cs.coupling.guards, s.loop.initial_parcels);
-  s.loop.next_monitor = s.loop.next_fields = s.loop.next_parcels = s.loop.next_checkpoint = 0.0;
-  s.loop.next_checkpoint = cs.output.checkpoint_interval;
+  s.loop.next_checkpoint = cs.output.checkpoint_interval;  // the other output times start at 0
   if (!checkpoint) clearEarlierRun(s.output.string(), MPI_COMM_WORLD);
   s.fields = std::make_unique<cfd::FieldWriter>(mesh, s.output.string(), "fields");
   s.parcel_output = std::make_unique<ParcelWriter>(MPI_COMM_WORLD, s.output.string());

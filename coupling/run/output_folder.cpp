@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "broadcast_text.h"
 #include "cfd/config_error.hpp"
 
 namespace parcelflow::coupling {
@@ -56,20 +57,12 @@ std::string moveEarlierRun(const fs::path& folder) {
          " to " + aside.string() + " (to continue a run use --restart instead)";
 }
 
-std::string broadcast(std::string text, MPI_Comm comm) {
-  int size = static_cast<int>(text.size());
-  MPI_Bcast(&size, 1, MPI_INT, 0, comm);
-  text.resize(size);
-  MPI_Bcast(text.data(), size, MPI_CHAR, 0, comm);
-  return text;
-}
-
 }  // namespace
 
 void prepareOutputFolder(const std::string& folder, const std::string& key, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  const std::string problem = broadcast(rank == 0 ? makeWritable(folder) : std::string(), comm);
+  const std::string problem = broadcastText(rank == 0 ? makeWritable(folder) : std::string(), 0, comm);
   if (!problem.empty())
     throw cfd::ConfigError(key, folder + " (" + problem + ")", "a folder that can be created and written");
 }
@@ -85,7 +78,7 @@ void clearEarlierRun(const std::string& folder, MPI_Comm comm) {
       problem = e.what();
     }
   }
-  problem = broadcast(problem, comm);
+  problem = broadcastText(problem, 0, comm);
   if (!problem.empty())
     throw std::runtime_error(folder + " holds an earlier run's output that cannot be moved aside: " + problem);
   if (rank == 0 && !removed.empty()) std::printf("parcelflow: warning: %s\n", removed.c_str());
