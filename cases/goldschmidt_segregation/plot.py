@@ -12,6 +12,9 @@ import h5py
 import matplotlib
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import void_shape  # noqa: E402
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -85,4 +88,8 @@ print(f"over {t[window][0]:.2f}-{t[-1]:.2f} s: mean height small {1000 * h_small
       f"{dp[window].mean() / weight[window].mean():.3f}")
 for name, h in (("small", small), ("large", large)):
     print("rms of the %s class's mean height: %.2f mm about its mean, %.2f mm about its linear trend" % ((name,) + rms_mm(h)))
+voids = void_shape.run_measure(void_shape.read_run(folder, t[window][0]))
+print(f"voids over {voids['snapshots']} field snapshots of the same window (void_shape.py): a bed-wide gas layer in "
+      f"{100 * voids['layer_share']:.0f} %, {voids['bubbles_per_snapshot']:.2f} bubbles per snapshot, mean bubble width "
+      f"{1000 * voids['mean_bubble_width']:.1f} mm")
 print(f"plot written: {heights_png}")
