@@ -105,9 +105,14 @@ std::vector<BoundarySettings> GasConfig::readBoundaries(const YamlSection& s) {
     bc.patch = name;
     const std::string type = b.word("type", std::nullopt, {"velocity_inlet", "pressure_outlet", "wall"});
     if (type == "velocity_inlet") {
-      b.allowOnly({"type", "superficial_velocity"});
+      b.allowOnly({"type", "superficial_velocity", "ramp_time", "distributor_pressure_drop"});
       bc.type = BoundaryType::VelocityInlet;
       bc.superficialVelocity = b.vec3("superficial_velocity", std::nullopt, Range::closed(-1e3, 1e3));
+      bc.rampTime = b.number("ramp_time", 0.0, Range::closed(0.0, 1e6));
+      bc.distributorPressureDrop = b.number("distributor_pressure_drop", 0.0, Range::closed(0.0, 1e9));
+      if (bc.distributorPressureDrop > 0.0 && bc.superficialVelocity.norm() == 0.0)
+        b.fail("distributor_pressure_drop", "needs a non-zero superficial_velocity (the plate's resistance is "
+                                            "its pressure drop over that velocity)");
     } else if (type == "pressure_outlet") {
       b.allowOnly({"type", "pressure"});
       bc.type = BoundaryType::PressureOutlet;
@@ -128,13 +133,14 @@ std::vector<InletRegionSettings> GasConfig::readInletRegions(const YAML::Node& r
   std::vector<InletRegionSettings> out;
   if (!top.has("inlet_regions")) return out;
   for (const auto& item : top.listOfMaps("inlet_regions")) {
-    item.allowOnly({"name", "region", "flow_rate", "velocity"});
+    item.allowOnly({"name", "region", "flow_rate", "velocity", "ramp_time"});
     InletRegionSettings r;
     r.name = item.text("name", std::nullopt);
     r.region = readShapeList(item, "region");
     if (r.region.items().empty()) item.fail("region", "must list at least one shape");
     r.flowRate = item.number("flow_rate", std::nullopt, Range::positive());
     r.velocity = item.vec3("velocity", Vec3::Zero(), Range::closed(-1e3, 1e3));
+    r.rampTime = item.number("ramp_time", 0.0, Range::closed(0.0, 1e6));
     out.push_back(r);
   }
   return out;

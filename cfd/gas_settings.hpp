@@ -36,6 +36,10 @@ struct BoundarySettings {
   BoundaryType type = BoundaryType::NoSlipWall;
   Vec3 superficialVelocity = Vec3::Zero();  // velocity_inlet
   double pressure = 0.0;                    // pressure_outlet, total pressure [Pa]
+  double rampTime = 0.0;                    // velocity_inlet: rises linearly from 0 over this time [s]
+  // velocity_inlet through a distributor plate: its pressure drop at the full superficial velocity [Pa]; 0 =
+  // the same velocity on every face.
+  double distributorPressureDrop = 0.0;
 };
 
 struct InletRegionSettings {
@@ -43,6 +47,7 @@ struct InletRegionSettings {
   Geometry region;               // unions and cut-outs of primitives (a ring = cylinder cut cylinder)
   double flowRate = 0.0;          // m^3/s of gas injected, spread over the region's cells by volume
   Vec3 velocity = Vec3::Zero();   // velocity of the injected gas (carries momentum rho*q*velocity)
+  double rampTime = 0.0;          // the flow rises linearly from 0 over this time [s]
 };
 
 enum class ConvectionScheme { Upwind, LimitedLinearUpwind };

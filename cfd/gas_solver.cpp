@@ -10,6 +10,10 @@
 
 namespace parcelflow::cfd {
 
+namespace {
+double rampFactor(double rampTime, double t) { return rampTime > 0.0 ? std::min(1.0, t / rampTime) : 1.0; }
+}  // namespace
+
 GasSolver::GasSolver(const GasSettings& settings, MPI_Comm comm)
     : GasSolver(settings,
                 std::make_shared<const Mesh>(MeshBuilder::build(settings.mesh, settings.geometry, comm))) {}
@@ -55,7 +59,9 @@ void GasSolver::setupBoundaries() {
       throw ConfigError("case.yaml: boundaries." + bc.patch +
                         ": the mesh has no patch of that name; its patches are: " + existing);
     }
-    patch_[id] = {bc.type, bc.superficialVelocity, bc.pressure, true};
+    patch_[id] = {bc.type, bc.superficialVelocity, bc.pressure, true, bc.rampTime};
+    if (bc.distributorPressureDrop > 0.0)
+      patch_[id].resistance = bc.distributorPressureDrop / bc.superficialVelocity.norm();
     haveOutlet = haveOutlet || bc.type == BoundaryType::PressureOutlet;
   }
   for (std::size_t p = 0; p < patch_.size(); ++p)
@@ -66,10 +72,16 @@ void GasSolver::setupBoundaries() {
     throw ConfigError("case.yaml: boundaries: at least one patch must be a pressure_outlet "
                       "(it fixes the pressure level and lets the gas leave)");
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
-    const auto type = patch_[m.boundaryPatch(b)].type;
-    if (type == BoundaryType::VelocityInlet)
-      phiB_[b] = patch_[m.boundaryPatch(b)].superficialVelocity.dot(m.boundaryArea(b));
-    if (type == BoundaryType::FreeSlipWall) {
+    const auto& pc = patch_[m.boundaryPatch(b)];
+    if (pc.resistance > 0.0) {
+      const Vec3 n = m.boundaryArea(b) / m.boundaryMagArea(b);
+      if ((pc.superficialVelocity - pc.superficialVelocity.dot(n) * n).norm() > 1e-12 * pc.superficialVelocity.norm())
+        throw ConfigError("case.yaml: boundaries." + m.patchNames()[m.boundaryPatch(b)] +
+                          ".superficial_velocity: a distributor plate needs a velocity normal to its faces");
+      // The start value; from then on the pressure correction sets these fluxes.
+      phiB_[b] = rampFactor(pc.rampTime, 0.0) * pc.superficialVelocity.dot(m.boundaryArea(b));
+    }
+    if (pc.type == BoundaryType::FreeSlipWall) {
       const Vec3 n = m.boundaryArea(b).cwiseAbs() / m.boundaryMagArea(b);
       PARCELFLOW_ASSERT(n.maxCoeff() == 1.0, "free-slip walls need axis-aligned faces");
     }
@@ -88,12 +100,30 @@ void GasSolver::setupInletRegions() {
       throw ConfigError("case.yaml: inlet_regions[" + std::to_string(r) + "].region (" +
                         region.name + "): contains no fluid cell centre");
     // The flow is spread uniformly over the region's volume, so it is injected exactly.
-    const double q = region.flowRate / volume;
+    InletRegionCells cells{{}, region.flowRate / volume, region.velocity, region.rampTime};
     for (int c = 0; c < m.nOwnedCells(); ++c)
-      if (region.region.isFluid(m.cellCentre(c))) {
-        injection_[c] += q;
-        injectionMomentum_[c] += q * region.velocity;
-      }
+      if (region.region.isFluid(m.cellCentre(c))) cells.cells.push_back(c);
+    inletRegions_.push_back(std::move(cells));
+  }
+  applyInletRamps(0.0);
+}
+
+void GasSolver::applyInletRamps(double t) {
+  const Mesh& m = *mesh_;
+  for (auto& pc : patch_) pc.scale = rampFactor(pc.rampTime, t);
+  for (int b = 0; b < m.nBoundaryFaces(); ++b) {
+    const auto& pc = patch_[m.boundaryPatch(b)];
+    if (pc.type == BoundaryType::VelocityInlet && pc.resistance == 0.0)
+      phiB_[b] = pc.scale * pc.superficialVelocity.dot(m.boundaryArea(b));
+  }
+  std::fill(injection_.begin(), injection_.end(), 0.0);
+  std::fill(injectionMomentum_.begin(), injectionMomentum_.end(), Vec3::Zero());
+  for (const auto& region : inletRegions_) {
+    const double q = rampFactor(region.rampTime, t) * region.q;
+    for (int c : region.cells) {
+      injection_[c] += q;
+      injectionMomentum_[c] += q * region.velocity;
+    }
   }
 }
 
@@ -154,6 +184,7 @@ void GasSolver::setVelocity(const VectorField& u) {
 StepReport GasSolver::advance(double dt) {
   PARCELFLOW_ASSERT(dt > 0.0, "time step must be positive");
   report_ = StepReport{};
+  applyInletRamps(time_ + dt);  // implicit Euler: the inlets at the new time level
   assembleMomentum(dt);
   solveMomentum();
   for (int corr = 0; corr < settings_.solver.pisoCorrectors; ++corr) correctPressure(dt, corr == 0);

@@ -86,10 +86,22 @@ class GasSolver {
     Vec3 superficialVelocity = Vec3::Zero();
     double pressure = 0.0;
     bool defined = false;
+    double rampTime = 0.0;
+    double scale = 1.0;       // the ramp's factor at the current time level
+    double resistance = 0.0;  // distributor plate: pressure drop / superficial velocity [Pa s/m]; 0 = none
+  };
+  // An inlet region's owned cells and its source per volume at full flow.
+  struct InletRegionCells {
+    std::vector<int> cells;
+    double q = 0.0;
+    Vec3 velocity = Vec3::Zero();
+    double rampTime = 0.0;
   };
 
   void setupBoundaries();
   void setupInletRegions();
+  // Inlet fluxes and sources at time t: each rises linearly from 0 over its ramp_time.
+  void applyInletRamps(double t);
   void initialiseHydrostatic();
   // Owned entries of a scalar or vector field (owned- or local-size), then a halo exchange.
   template <class Field>
@@ -104,6 +116,9 @@ class GasSolver {
   void solveMomentum();
   // gas_solver_pressure.cpp
   void correctPressure(double dt, bool firstCorrector);
+  // Distributor inlets: adds the response to the plenum pressure P (solved with the matrix of this step) so
+  // that the plates let in exactly their flow; returns P (p_rgh) and counts the extra solve's iterations.
+  double addPlenumPressure(const ScalarField& plateCoeff, double inflow);
   void finishStep(double dt);
 
   GasSettings settings_;
@@ -111,6 +126,7 @@ class GasSolver {
   double rho_, mu_;
   Vec3 g_;
   std::vector<PatchCondition> patch_;
+  std::vector<InletRegionCells> inletRegions_;
   ScalarField alpha_, alphaOld_, beta_, injection_;
   VectorField betaUs_, injectionMomentum_, U_, Uold_;
   // p = pRef_ + pRgh_ + rho g.x: the solved part pRgh_ stays small next to an absolute outlet pressure

@@ -21,7 +21,11 @@ VectorField GasSolver::boundaryVelocity() const {
       case BoundaryType::NoSlipWall: break;
       case BoundaryType::FreeSlipWall: ub[b] = U_[c] - U_[c].dot(n) * n; break;
       // Interstitial velocity at the face: superficial / a_g of the face (taken from the cell).
-      case BoundaryType::VelocityInlet: ub[b] = pc.superficialVelocity / alpha_[c]; break;
+      case BoundaryType::VelocityInlet:
+        // A distributor's faces carry the flux the last pressure correction gave them.
+        ub[b] = (pc.resistance > 0.0 ? (phiB_[b] / m.boundaryMagArea(b)) * n : pc.scale * pc.superficialVelocity) /
+                alpha_[c];
+        break;
       case BoundaryType::PressureOutlet: ub[b] = U_[c]; break;
     }
   }

@@ -3,6 +3,7 @@
 // Dt = a V / (A - H1) are drag-dominated on faces and cells alike: no odd-even decoupling. Gravity
 // enters through p_rgh = p - rho g.x - p_ref (constant gas density), so the hydrostatic balance is
 // exact on faces.
+#include <algorithm>
 #include <cmath>
 
 #include "fvc.hpp"
@@ -68,12 +69,24 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
     if (firstCorrector) pEqn_->addSymmetric(f, coeff[f]);
   }
   ScalarField phiHbyAB(m.nBoundaryFaces(), 0.0), coeffB(m.nBoundaryFaces(), 0.0);
-  const ScalarField pB = boundaryPressure();
-  ScalarField rhs(nOwned, 0.0);
+  ScalarField pB = boundaryPressure();
+  ScalarField rhs(nOwned, 0.0), plateCoeff;  // plateCoeff: distributor faces' A/R summed per cell
+  double plateInflow = 0.0;
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     const int c = m.boundaryCell(b);
-    const auto type = patch_[m.boundaryPatch(b)].type;
-    if (type == BoundaryType::VelocityInlet) phiHbyAB[b] = phiB_[b];
+    const auto& pc = patch_[m.boundaryPatch(b)];
+    const auto type = pc.type;
+    if (type == BoundaryType::VelocityInlet && pc.resistance > 0.0) {
+      // Distributor plate: superficial velocity (P - p) / R into the cell, P the plenum pressure: like an
+      // outlet at the pressure P, which addPlenumPressure finds.
+      if (plateCoeff.empty()) plateCoeff.assign(nOwned, 0.0);
+      coeffB[b] = m.boundaryMagArea(b) / pc.resistance;
+      if (firstCorrector) pEqn_->diag()[c] += coeffB[b];
+      plateCoeff[c] += coeffB[b];
+      plateInflow -= pc.scale * pc.superficialVelocity.dot(m.boundaryArea(b));
+    } else if (type == BoundaryType::VelocityInlet) {
+      phiHbyAB[b] = phiB_[b];
+    }
     if (type == BoundaryType::PressureOutlet) {
       const int k = dominantAxis(m.boundaryArea(b));
       const double snGrad = (pB[b] - pRgh_[c]) / m.boundaryDelta(b);
@@ -98,6 +111,12 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
   if (firstCorrector) pPrecond_.recordIterations(stats.iterations);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
+  // Every rank knows all patches, so all take this branch together (it is collective).
+  if (std::any_of(patch_.begin(), patch_.end(), [](const PatchCondition& pc) { return pc.resistance > 0.0; })) {
+    const double plenum = addPlenumPressure(plateCoeff, m.sum(plateInflow));
+    for (int b = 0; b < m.nBoundaryFaces(); ++b)
+      if (patch_[m.boundaryPatch(b)].resistance > 0.0) pB[b] = plenum;
+  }
 
   for (int f = 0; f < m.nInternalFaces(); ++f)
     phi_[f] = phiHbyA[f] - coeff[f] * (pRgh_[m.faceNeighbour(f)] - pRgh_[m.faceOwner(f)]);
@@ -108,6 +127,29 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
   for (int c = 0; c < nOwned; ++c)
     U_[c] = HbyA[c] + (Dt[c] - D[c]).cwiseProduct(gradOld[c]) - Dt[c].cwiseProduct(gradPrgh_[c]);
   m.exchange(U_);
+}
+
+double GasSolver::addPlenumPressure(const ScalarField& plateCoeff, double inflow) {
+  // The pressure is linear in P: p = p1 + P p2, p1 solved with P = 0 (in pRgh_), p2 the response to P = 1
+  // (right-hand side plateCoeff). The plates let in sum c (P - p) = inflow, so
+  // P = (inflow + sum c p1) / sum c (1 - p2): the flow is exact whatever the plate pressures do.
+  const Mesh& m = *mesh_;
+  const int nOwned = m.nOwnedCells();
+  ScalarField response(m.nLocalCells(), 0.0);
+  ScalarField rhs(nOwned, 0.0);
+  if (!plateCoeff.empty()) rhs = plateCoeff;
+  const SolveStats stats = pSolver_->pcg(response, rhs);
+  report_.pressureIterations += stats.iterations;
+  report_.unconvergedSolves += stats.converged ? 0 : 1;
+  double num = 0.0, den = 0.0;
+  if (!plateCoeff.empty())
+    for (int c = 0; c < nOwned; ++c) {
+      num += plateCoeff[c] * pRgh_[c];
+      den += plateCoeff[c] * (1.0 - response[c]);
+    }
+  const double plenum = (inflow + m.sum(num)) / m.sum(den);
+  for (int c = 0; c < m.nLocalCells(); ++c) pRgh_[c] += plenum * response[c];
+  return plenum;
 }
 
 void GasSolver::finishStep(double dt) {

@@ -73,3 +73,30 @@ TEST(Sparger, OutletFlowEqualsInjectedFlow) {
     EXPECT_LT(diff, 1e-10);
   }
 }
+
+// ramp_time: the sparger's flow and a velocity inlet's rise linearly from 0; every step the outflow equals
+// the inflow at the step's new time level, min(1, t / ramp) of the full flow (implicit Euler).
+TEST(Sparger, RampedInletsFollowTheRamp) {
+  constexpr double kDt = 5e-3, kRamp = 0.04, kInletU = 0.01;
+  GasSettings s = columnSettings();
+  s.inletRegions[0].rampTime = kRamp;
+  s.boundaries[0] = {"zmin", BoundaryType::VelocityInlet, Vec3(0, 0, kInletU), 0.0, 2 * kRamp};
+  GasSolver gas(s, MPI_COMM_WORLD);
+  double plate = 0.0;  // area of the column's bottom faces
+  const Mesh& m = gas.mesh();
+  for (int b = 0; b < m.nBoundaryFaces(); ++b)
+    if (m.patchNames()[m.boundaryPatch(b)] == "zmin") plate += m.boundaryMagArea(b);
+  plate = m.sum(plate);
+  double worst = 0.0;
+  for (int step = 1; step <= kSteps; ++step) {
+    const double t = step * kDt;
+    const double expected = std::min(1.0, t / kRamp) * kQ + std::min(1.0, t / (2 * kRamp)) * kInletU * plate;
+    const StepReport r = gas.advance(kDt);
+    EXPECT_NEAR(r.injectedFlow, std::min(1.0, t / kRamp) * kQ, 1e-12 * kQ) << "step " << step;
+    worst = std::max(worst, std::abs(gas.patchOutflow("zmax") - expected) / expected);
+  }
+  if (isRoot())
+    std::cout << "[measured] ramped sparger and plate inlet: worst |Q_out - Q_in(t)| / Q_in(t) over " << kSteps
+              << " steps = " << worst << std::endl;
+  EXPECT_LT(worst, 1e-10);
+}

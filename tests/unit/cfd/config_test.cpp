@@ -94,6 +94,7 @@ TEST(GasConfig, ValidFileParses) {
   EXPECT_DOUBLE_EQ(s.gas.viscosity, 1.8e-5);
   EXPECT_EQ(s.boundaries.size(), 8u);
   EXPECT_EQ(s.inletRegions.size(), 1u);
+  EXPECT_EQ(s.inletRegions[0].rampTime, 0.0);  // full flow from the start unless ramp_time is given
   EXPECT_TRUE(s.inletRegions[0].region.isFluid(Vec3(0.1 + 0.06, 0.1, 0.07)));
   EXPECT_FALSE(s.inletRegions[0].region.isFluid(Vec3(0.1, 0.1, 0.07)));
   EXPECT_EQ(s.solver.pisoCorrectors, 3);
@@ -140,6 +141,14 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
   expectError(errorOf(replaced("radius: 0.04,", "radius: -0.04,")), {"geometry[1].shape.cylinder.radius"});
   expectError(errorOf(replaced("    flow_rate: 1.0e-3", "    flow_rate: 0")),
               {"inlet_regions[0].flow_rate = 0", "> 0"});
+  expectError(errorOf(replaced("    flow_rate: 1.0e-3", "    flow_rate: 1.0e-3\n    ramp_time: -1")),
+              {"inlet_regions[0].ramp_time = -1"});
+  expectError(errorOf(replaced("superficial_velocity: [0, 0, 0.1]}", "superficial_velocity: [0, 0, 0.1], ramp_time: -0.5}")),
+              {"boundaries.zmin.ramp_time = -0.5"});
+  expectError(errorOf(replaced("superficial_velocity: [0, 0, 0.1]}", "superficial_velocity: [0, 0, 0.1], distributor_pressure_drop: -5}")),
+              {"boundaries.zmin.distributor_pressure_drop = -5"});
+  expectError(errorOf(replaced("superficial_velocity: [0, 0, 0.1]}", "superficial_velocity: [0, 0, 0], distributor_pressure_drop: 100}")),
+              {"boundaries.zmin.distributor_pressure_drop", "non-zero superficial_velocity"});
   expectError(errorOf(replaced("momentum: {tolerance: 1.0e-9}", "momentum: {preconditioner: block_ic}")),
               {"solver.momentum.preconditioner", "jacobi"});
   expectError(errorOf(replaced("min: [0, 0, 0], max: [0.2, 0.2, 0.5]", "min: [0, 0, 0], max: [0.2, 0, 0.5]")),
