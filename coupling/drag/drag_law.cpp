@@ -1,6 +1,7 @@
 #include "drag_law.hpp"
 
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 #include "cfd/internal_error.hpp"
@@ -11,12 +12,16 @@ namespace {
 
 struct Entry {
   std::string name;
-  DragLaw (*make)();
+  DragLaw (*make)(const DragLawContext&);
 };
 
 template <std::size_t I>
-DragLaw makeAlternative() {
-  return DragLaw(std::in_place_index<I>);
+DragLaw makeAlternative(const DragLawContext& context) {
+  using Law = std::variant_alternative_t<I, DragLaw>;
+  if constexpr (std::is_constructible_v<Law, const DragLawContext&>)
+    return DragLaw(std::in_place_index<I>, context);
+  else
+    return DragLaw(std::in_place_index<I>);
 }
 
 template <std::size_t... I>
@@ -43,9 +48,9 @@ std::vector<std::string> dragLawNames() {
   return names;
 }
 
-DragLaw makeDragLaw(const std::string& name) {
+DragLaw makeDragLaw(const std::string& name, const DragLawContext& context) {
   for (const Entry& e : registry())
-    if (e.name == name) return e.make();
+    if (e.name == name) return e.make(context);
   std::string valid;
   for (const Entry& e : registry()) valid += (valid.empty() ? "" : ", ") + e.name;
   throw cfd::ConfigError("coupling.drag", name, "one of " + valid);

@@ -3,9 +3,12 @@
 //
 // Every law is a small class with `static constexpr const char* typeName`, `static const char*
 // reference()` and an inline `double coefficient(const DragInput&) const` returning K = beta / a_s.
-// A DragLaw holds one of them; the registry is built from the alternatives of this variant, so adding a
-// law means: write the class, add it to the list below. makeDragLaw("WenYu") selects one at run time;
-// an unknown name throws cfd::ConfigError listing the valid names.
+// A law that needs per-case constants has a constructor from DragLawContext (drag_input.hpp), the others
+// are default-constructed. A law that may bound a correction also has `coefficient(in, bool& clamped)`,
+// which forEachParcel calls and counts. A DragLaw holds one of them; the registry is built from the
+// alternatives of this variant, so adding a law means: write the class, add it to the list below.
+// makeDragLaw("WenYu", context) selects one at run time; an unknown name throws cfd::ConfigError
+// listing the valid names.
 //
 // Hot loops visit the variant ONCE and run a loop templated on the concrete law
 // (forEachParcel in parcel_drag.hpp, or visitDragLaw with a generic lambda).
@@ -21,12 +24,13 @@
 #include "ergun_drag.hpp"
 #include "gidaspow_blend_drag.hpp"
 #include "gidaspow_drag.hpp"
+#include "radl_sundaresan_drag.hpp"
 #include "wen_yu_drag.hpp"
 
 namespace parcelflow::coupling {
 
 using DragLaw = std::variant<WenYuDrag, GidaspowDrag, GidaspowBlendDrag, ErgunDrag, DiFeliceDrag,
-                             BeetstraDrag>;
+                             BeetstraDrag, RadlSundaresanDrag>;
 
 // Whether a law reads DragInput::dMean (the local Sauter mean): such a law declares
 // `static constexpr bool usesMeanDiameter = true`; the others need not mention it.
@@ -43,8 +47,8 @@ inline bool usesMeanDiameter(const DragLaw& law) {
 std::vector<std::string> dragLawNames();
 
 // The law registered under `name` (exact, case-sensitive); throws cfd::ConfigError naming the
-// valid ones otherwise.
-DragLaw makeDragLaw(const std::string& name);
+// valid ones otherwise. Laws that need the context assert its values (the case reader checks them).
+DragLaw makeDragLaw(const std::string& name, const DragLawContext& context = {});
 
 std::string dragLawName(const DragLaw& law);
 std::string dragLawReference(const DragLaw& law);

@@ -4,12 +4,15 @@
 //
 // Limits, never silent: a_g below DragLimits::alphaGFloor is evaluated at the floor, a_g above 1 at 1,
 // and both are counted in DragStats; non-finite or non-physical inputs give K = kappa = 0 and are
-// counted as invalidInput. The caller reports the counts (DESIGN.md section 4).
+// counted as invalidInput; a law's own bound on a correction is counted as filterCorrectionClamped.
+// The caller reports the counts (DESIGN.md section 4).
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "drag_law.hpp"
 
@@ -35,6 +38,7 @@ struct DragStats {
   std::size_t alphaGFloored = 0;   // a_g < floor: evaluated at the floor
   std::size_t alphaGAboveOne = 0;  // a_g > 1: evaluated at 1
   std::size_t invalidInput = 0;    // non-finite a_g/slip, slip < 0, dp <= 0 or np <= 0: K = kappa = 0
+  std::size_t filterCorrectionClamped = 0;  // a filtered law bounded its correction (RadlSundaresan: H = 0)
   double minAlphaG = std::numeric_limits<double>::infinity();  // before flooring
 
   void merge(const DragStats& o) {
@@ -42,13 +46,33 @@ struct DragStats {
     alphaGFloored += o.alphaGFloored;
     alphaGAboveOne += o.alphaGAboveOne;
     invalidInput += o.invalidInput;
+    filterCorrectionClamped += o.filterCorrectionClamped;
     if (o.minAlphaG < minAlphaG) minAlphaG = o.minAlphaG;
   }
 };
 
 namespace drag_detail {
 void checkBatch(const ParcelDragBatch& batch, const DragLimits& limits);  // PARCELFLOW_ASSERT
+
+template <class Law, class = void>
+struct ReportsClamp : std::false_type {};
+template <class Law>
+struct ReportsClamp<Law, std::void_t<decltype(std::declval<const Law&>().coefficient(
+                             std::declval<const DragInput&>(), std::declval<bool&>()))>> : std::true_type {};
+
+// K of one parcel; a law that bounds a correction says so and it is counted.
+template <class Law>
+double coefficientCounted(const Law& law, const DragInput& in, DragStats& stats) noexcept {
+  if constexpr (ReportsClamp<Law>::value) {
+    bool clamped = false;
+    const double k = law.coefficient(in, clamped);
+    if (clamped) ++stats.filterCorrectionClamped;
+    return k;
+  } else {
+    return law.coefficient(in);
+  }
 }
+}  // namespace drag_detail
 
 // Calls fn(p, K, kappa) for every parcel p, K = beta / a_s [kg/(m^3 s)], kappa = np V_p K [kg/s].
 template <class Fn>
@@ -83,7 +107,7 @@ DragStats forEachParcel(const DragLaw& law, const ParcelDragBatch& batch, const 
       } else {
         in.alphaG = a;
       }
-      const double k = concreteLaw.coefficient(in);
+      const double k = drag_detail::coefficientCounted(concreteLaw, in, stats);
       fn(p, k, parcelKappa(np, in.dp, k));
     }
     return stats;

@@ -68,10 +68,30 @@ GuardSettings readGuards(const YamlSection& s) {
   return g;
 }
 
+// coupling.filtered_drag belongs to the filtered law alone: required with it, refused with any other.
+FilteredDragSettings readFilteredDrag(const YamlSection& s, const std::string& drag) {
+  const std::string filtered = RadlSundaresanDrag::typeName;
+  if (drag != filtered) {
+    if (s.has("filtered_drag"))
+      s.fail("filtered_drag", "is only read by coupling.drag: " + filtered + " (coupling.drag is " + drag +
+                                  "); remove it or choose that law");
+    return {};
+  }
+  if (!s.has("filtered_drag"))
+    s.fail("filtered_drag", "is required by coupling.drag: " + filtered +
+                                ", e.g. filtered_drag: {particle_density: 1500} (kg/m^3 of the real particles)");
+  const YamlSection f = s.map("filtered_drag");
+  f.allowOnly({"particle_density"});
+  FilteredDragSettings settings;
+  settings.particle_density = f.number("particle_density", std::nullopt, Range::positive());
+  return settings;
+}
+
 CouplingSettings readCoupling(const YamlSection& s) {
-  s.allowOnly({"drag", "kernel", "gas_fraction_floor", "guards"});
+  s.allowOnly({"drag", "filtered_drag", "kernel", "gas_fraction_floor", "guards"});
   CouplingSettings c;
   c.drag = s.word("drag", c.drag, dragLawNames());
+  c.filtered_drag = readFilteredDrag(s, c.drag);
   // Below 0.01 over-filled cells give the gas Courant numbers of 100 and more (coupling/README.md).
   c.gas_fraction_floor =
       s.number("gas_fraction_floor", c.gas_fraction_floor, Range{kMinGasFractionFloor, 1.0, false, true});
@@ -127,6 +147,21 @@ MonitorSettings readMonitors(const YamlSection& s, const YAML::Node& node) {
   return m;
 }
 
+// The filtered law needs particles heavier than the gas (a terminal velocity) and gravity (its length scale).
+void checkFilteredDragAgainstGas(const CouplingSettings& coupling, const cfd::GasProperties& gas) {
+  if (coupling.drag != RadlSundaresanDrag::typeName) return;
+  const std::string law = std::string("coupling.drag: ") + RadlSundaresanDrag::typeName;
+  const double density = coupling.filtered_drag.particle_density;
+  if (!(density > gas.density))
+    throw ConfigError("coupling.filtered_drag.particle_density", numberText(density),
+                      "a number > gas.density = " + numberText(gas.density) + " (" + law +
+                          " needs the terminal velocity of particles heavier than the gas)");
+  if (!(gas.gravity.norm() > 0.0))
+    throw ConfigError("gas.gravity", "[" + numberText(gas.gravity[0]) + ", " + numberText(gas.gravity[1]) + ", " +
+                                         numberText(gas.gravity[2]) + "]",
+                      "a non-zero vector with " + law + " (its filter size is measured in v_t^2 / |g|)");
+}
+
 }  // namespace
 
 CaseSettings readCouplingSettings(const YAML::Node& root) {
@@ -158,6 +193,7 @@ CaseDefinition readCase(const std::string& case_folder) {
   c.folder = case_folder;
   c.settings = readCouplingSettings(root);
   c.gas = cfd::GasConfig(root).settings();
+  checkFilteredDragAgainstGas(c.settings.coupling, c.gas.gas);
   const std::string script = case_folder + "/" + c.settings.liggghts.script;
   if (!std::ifstream(script))
     throw ConfigError("liggghts.script: cannot read '" + script + "' (path relative to the case folder)");

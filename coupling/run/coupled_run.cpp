@@ -141,9 +141,13 @@ void CoupledRun::initialize() {
   TransferKernelOptions kernel_options;
   kernel_options.gaussianSharpness = cs.coupling.kernel.sharpness;
   kernel_options.gaussianRadius = cs.coupling.kernel.radius;
+  DragLawContext drag_context;  // per-case constants of the filtered law (the others ignore them)
+  drag_context.filterSize = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
+  drag_context.gravity = s.case_def.gas.gas.gravity.norm();
+  drag_context.particleDensity = cs.coupling.filtered_drag.particle_density;
   s.coupler = std::make_unique<ParcelMeshCoupler>(
-      grid, *s.owners, makeTransferKernel(cs.coupling.kernel.type, kernel_options), makeDragLaw(cs.coupling.drag),
-      DragLimits{cs.coupling.gas_fraction_floor},
+      grid, *s.owners, makeTransferKernel(cs.coupling.kernel.type, kernel_options),
+      makeDragLaw(cs.coupling.drag, drag_context), DragLimits{cs.coupling.gas_fraction_floor},
       GasProperties{s.case_def.gas.gas.density, s.case_def.gas.gas.viscosity});
 
   s.dem->start(checkpoint ? checkpoint->paths.dem : std::string());
@@ -209,6 +213,7 @@ bool CoupledRun::advance() {
   s.counters.drag_floored += static_cast<long>(drag.alphaGFloored);
   s.counters.drag_invalid += static_cast<long>(drag.invalidInput);
   s.counters.drag_above_one += static_cast<long>(drag.alphaGAboveOne);
+  s.counters.drag_filter_clamped += static_cast<long>(drag.filterCorrectionClamped);
   s.gas->setGasFraction(s.gas_fraction);
   s.gas->setDragCoefficient(s.solids.beta);
   s.gas->setDragSource(vectorField(s.solids.beta_us));
@@ -355,12 +360,14 @@ void CoupledRun::finalize() {
     std::printf("%s\n", formatProgress(s.progress).c_str());
     std::printf("parcelflow: done: %ld gas steps, %.3f s simulated in %.1f s wall; lowest gas fraction %.4f; "
                 "gas-fraction floor %.3f hit in %ld cell-steps, drag at the floor for %ld parcel-steps, "
-                "drag input invalid for %ld and a_g above 1 for %ld parcel-steps; "
+                "drag input invalid for %ld and a_g above 1 for %ld parcel-steps, filtered-drag correction "
+                "bounded for %ld; "
                 "%ld parcel-steps without a fluid cell, %ld in a neighbouring cell (centroid kernel); "
                 "%ld parcels lost\n",
                 s.loop.step, s.loop.time, s.progress.wall_seconds, total.min_gas_fraction,
                 s.case_def.settings.coupling.gas_fraction_floor, total.floor_hits, total.drag_floored,
-                total.drag_invalid, total.drag_above_one, total.orphans, total.fallbacks, lost);
+                total.drag_invalid, total.drag_above_one, total.drag_filter_clamped, total.orphans, total.fallbacks,
+                lost);
     std::printf("parcelflow: gas: %.1f pressure iterations per step, pressure preconditioner built in %ld of %ld "
                 "steps, %ld linear solves stopped at max_iterations\n",
                 s.loop.step > 0 ? static_cast<double>(total.pressure_iterations) / s.loop.step : 0.0,

@@ -36,8 +36,14 @@ struct GuardSettings {
   double max_parcel_loss = 0.1;         // parcels lost in one coupling step, as a fraction of the initial count
 };
 
+// coupling.filtered_drag: required by, and only allowed with, coupling.drag: RadlSundaresanFilteredBVK.
+struct FilteredDragSettings {
+  double particle_density = 0.0;  // kg/m^3 of every real particle (for its terminal velocity); > gas.density
+};
+
 struct CouplingSettings {
   std::string drag = "WenYu";
+  FilteredDragSettings filtered_drag;
   KernelSettings kernel;
   double gas_fraction_floor = 0.35;  // a_g is never below this; every hit is counted and reported
   GuardSettings guards;

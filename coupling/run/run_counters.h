@@ -16,6 +16,7 @@ struct RunCounters {
   long drag_floored = 0;      // parcel-steps whose drag was evaluated at the floor
   long drag_invalid = 0;      // parcel-steps with invalid drag input
   long drag_above_one = 0;    // parcel-steps that saw a_g above 1
+  long drag_filter_clamped = 0;  // parcel-steps whose filtered-drag correction was bounded (drag_law.hpp)
   long orphans = 0;           // parcel-steps without a fluid cell in the stencil (no gas force)
   long fallbacks = 0;         // parcel-steps the centroid kernel put into a neighbouring fluid cell
   long pressure_iterations = 0, preconditioner_builds = 0, unconverged_solves = 0;  // same on all ranks
@@ -24,7 +25,8 @@ struct RunCounters {
   // The per-rank counters (summed over ranks for a global value), by name.
   std::vector<std::pair<const char*, long*>> perRank() {
     return {{"floor_hits", &floor_hits}, {"drag_floored", &drag_floored}, {"drag_invalid", &drag_invalid},
-            {"drag_above_one", &drag_above_one}, {"orphans", &orphans}, {"kernel_fallbacks", &fallbacks}};
+            {"drag_above_one", &drag_above_one}, {"drag_filter_clamped", &drag_filter_clamped},
+            {"orphans", &orphans}, {"kernel_fallbacks", &fallbacks}};
   }
   // The counters that are the same on every rank, by name.
   std::vector<std::pair<const char*, long*>> global() {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "drag_test_context.hpp"
 #include "parcel_drag.hpp"
 #include "cfd/config_error.hpp"
 #include "cfd/internal_error.hpp"
@@ -14,9 +15,9 @@ using namespace parcelflow::coupling;
 TEST(DragRegistry, AllNamesConstructAndRoundTrip) {
   const std::vector<std::string> names = dragLawNames();
   EXPECT_EQ(names, (std::vector<std::string>{"WenYu", "Gidaspow", "GidaspowBlend", "Ergun", "DiFelice",
-                                              "BeetstraVanDerHoefKuipers"}));
+                                              "BeetstraVanDerHoefKuipers", "RadlSundaresanFilteredBVK"}));
   for (const std::string& n : names) {
-    const DragLaw law = makeDragLaw(n);
+    const DragLaw law = makeDragLaw(n, test::fccContext());
     EXPECT_EQ(dragLawName(law), n);
     EXPECT_FALSE(dragLawReference(law).empty());
   }
@@ -62,11 +63,16 @@ TEST(ParcelDrag, BatchLoopEqualsSingleEvaluationsForEveryLaw) {
   }
   const DragLimits limits{0.2};
   for (const std::string& name : dragLawNames()) {
-    const DragLaw law = makeDragLaw(name);
+    const DragLaw law = makeDragLaw(name, test::fccContext());
     std::vector<double> kappa(b.alphaG.size());
     const DragStats st = computeParcelKappa(law, b.view(true), limits, kappa.data());
     EXPECT_EQ(st.parcels, 200u);
     EXPECT_EQ(st.alphaGFloored + st.alphaGAboveOne + st.invalidInput, 0u);
+    // the filtered law bounds its correction where phi > 0.6 (a_g < 0.4: 13 of these parcels), and says so
+    std::size_t beyondFit = 0;
+    for (double a : b.alphaG) beyondFit += RadlSundaresanDrag::largeFilterCorrection(1.0 - a) < 0.0;
+    EXPECT_EQ(beyondFit, 13u);
+    EXPECT_EQ(st.filterCorrectionClamped, name == "RadlSundaresanFilteredBVK" ? beyondFit : 0u) << name;
     for (std::size_t p = 0; p < kappa.size(); ++p) {
       DragInput in{b.alphaG[p], 1.2, 1.8e-5, b.dp[p], b.slip[p], b.dMean[p]};
       const double want = parcelKappa(b.np[p], b.dp[p], exchangeCoefficientPerSolidVolume(law, in));
