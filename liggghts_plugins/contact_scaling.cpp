@@ -15,31 +15,45 @@ using namespace LAMMPS_NS;
 
 namespace parcelflow::plugins {
 
-std::string ContactScaling::apply(LAMMPS* lmp, double l, const char* caller)
+namespace {
+
+// The factor of each coefficient for a contact of scale factor l.
+double factor_of(const std::string& name, double l)
 {
-  undo(lmp);
   HookeCoefficients unit;
   unit.kn = unit.kt = unit.gamman = unit.gammat = 1.0;
+  unit.absolute_damping = name == "gamman_abs" || name == "gammat_abs";
   const HookeCoefficients rel = scale_linear(unit, l);
-  unit.absolute_damping = true;
-  const HookeCoefficients rel_abs = scale_linear(unit, l);
-  const std::vector<std::pair<std::string, double>> factors = {
-      {"kn", rel.kn},         {"kt", rel.kt},         {"gamman", rel.gamman},
-      {"gammat", rel.gammat}, {"gamman_abs", rel_abs.gamman}, {"gammat_abs", rel_abs.gammat}};
-  for (const auto& [name, factor] : factors) {
+  if (name == "kn") return rel.kn;
+  if (name == "kt") return rel.kt;
+  return name == "gamman" || name == "gamman_abs" ? rel.gamman : rel.gammat;
+}
+
+}  // namespace
+
+std::string ContactScaling::apply(LAMMPS* lmp, const PairScaleFactor& l, int ntypes, const char* caller)
+{
+  undo(lmp);
+  for (const std::string name : {"kn", "kt", "gamman", "gammat", "gamman_abs", "gammat_abs"}) {
     auto* pg = dynamic_cast<FixPropertyGlobal*>(lmp->modify->find_fix_property(
         name.c_str(), "property/global", "peratomtypepair", 0, 0, caller, false));
     if (!pg) continue;
+    const int rows = pg->size_array_rows, cols = pg->size_array_cols;
+    if (ntypes > 0 && (rows != ntypes || cols != ntypes)) {
+      undo(lmp);
+      return "fix parcel: fix property/global " + name + " (ID " + pg->id + ") holds " + std::to_string(rows) +
+             " x " + std::to_string(cols) + " values but dp_by_type gives " + std::to_string(ntypes) +
+             " atom types; allowed: one row and column per atom type";
+    }
     ScaledProperty sp;
     sp.name = name;
     sp.fix_id = pg->id;
     sp.fix = pg;
-    sp.factor = factor;
-    const int nvalues = pg->size_array_rows * pg->size_array_cols;
     double* values = const_cast<double*>(pg->get_values());  // the fix owns a plain malloc'd array
-    for (int v = 0; v < nvalues; ++v) {
+    for (int v = 0; v < rows * cols; ++v) {
+      sp.factors.push_back(factor_of(name, l(v / cols + 1, v % cols + 1)));
       sp.original.push_back(values[v]);
-      values[v] *= factor;
+      values[v] *= sp.factors.back();
       sp.scaled.push_back(values[v]);
     }
     scaled_.push_back(sp);
@@ -85,7 +99,11 @@ std::string ContactScaling::describe() const
   std::ostringstream out;
   out.precision(6);
   for (const ScaledProperty& sp : scaled_) {
-    out << "  " << sp.name << " (fix " << sp.fix_id << ", x " << sp.factor << "):";
+    const bool uniform = std::all_of(sp.factors.begin(), sp.factors.end(),
+                                     [&](double f) { return f == sp.factors.front(); });
+    out << "  " << sp.name << " (fix " << sp.fix_id << ", x ";
+    if (uniform) out << sp.factors.front() << "):";
+    else out << "per type pair):";
     for (std::size_t v = 0; v < sp.scaled.size(); ++v) out << " " << sp.original[v] << " -> " << sp.scaled[v];
     out << "\n";
   }

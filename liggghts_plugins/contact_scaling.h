@@ -5,6 +5,7 @@
 // init), so they are scaled in place once, when fix parcel is defined, and restored on unfix.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,14 +18,20 @@ namespace parcelflow::plugins {
 
 class ContactScaling {
  public:
-  // Multiplies every coefficient present by its factor for l (kn, kt: l; gamman, gammat: 1/l;
-  // gamman_abs, gammat_abs: l^2). Returns "" on success, else a message; then nothing stays scaled.
-  std::string apply(LAMMPS_NS::LAMMPS* lmp, double l, const char* caller);
+  // l(type_i, type_j) (1-based) for every type pair: the scale factor of the contact of the two types.
+  using PairScaleFactor = std::function<double(int, int)>;
+
+  // Multiplies every coefficient present, per type pair, by its factor for that pair's l (kn, kt: l;
+  // gamman, gammat: 1/l; gamman_abs, gammat_abs: l^2). `ntypes` > 0: l is defined for types 1..ntypes only,
+  // and every coefficient must be an ntypes x ntypes matrix; 0: l is defined for any type. Returns "" on
+  // success, else a message; then nothing stays scaled.
+  std::string apply(LAMMPS_NS::LAMMPS* lmp, const PairScaleFactor& l, int ntypes, const char* caller);
   // Restores the original values of the fixes that still hold the scaled ones.
   void undo(LAMMPS_NS::LAMMPS* lmp);
   // "" if every scaled fix still exists with the scaled values, else a message naming it.
   std::string check_intact(LAMMPS_NS::LAMMPS* lmp, const char* fix_id) const;
-  // One line per coefficient: "  kn (fix kn, x 2): 1000 -> 2000".
+  // One line per coefficient: "  kn (fix kn, x 2): 1000 -> 2000", or with factors that differ between
+  // type pairs "  kn (fix kn, per type pair): 100 -> 333.333 100 -> 282.388 ...".
   std::string describe() const;
   bool applied() const { return !scaled_.empty(); }
 
@@ -37,8 +44,7 @@ class ContactScaling {
     std::string name;  // kn, kt, gamman, gammat, gamman_abs, gammat_abs
     std::string fix_id;
     LAMMPS_NS::FixPropertyGlobal* fix = nullptr;
-    double factor = 1.0;
-    std::vector<double> original, scaled;
+    std::vector<double> factors, original, scaled;  // per value, row-major type pairs
   };
   std::vector<ScaledProperty> scaled_;
 };

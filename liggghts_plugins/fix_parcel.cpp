@@ -21,7 +21,9 @@ namespace parcelflow::plugins {
 namespace {
 
 constexpr double kDiameterTolerance = 1e-6;  // relative; inserted diameter vs. parcel diameter D
-constexpr int kRestartVersion = 1;
+constexpr double kDensityTolerance = 1e-9;   // relative; one density for dp_by_type with scaling linear
+// 2 added the dp_by_type diameters; files of version 1 are still read
+constexpr int kRestartVersion = 2;
 
 }  // namespace
 
@@ -35,6 +37,10 @@ FixParcel::FixParcel(LAMMPS* lmp, int narg, char** arg) : PerAtomColumnsFix(lmp,
   if (!atom->radius_flag || !atom->rmass_flag)
     fail("fix parcel: needs per-atom radius and mass (atom_style sphere or granular)");
   if (!atom->tag_enable) fail("fix parcel: needs atom IDs (atom_modify id yes)");
+  if (settings_.by_type() && static_cast<int>(settings_.type_diameters.size()) != atom->ntypes)
+    fail("fix parcel: keyword 'dp_by_type' got " + std::to_string(settings_.type_diameters.size()) +
+         " values but the box has " + std::to_string(atom->ntypes) + " atom types; allowed: one value per atom type 1.." +
+         std::to_string(atom->ntypes) + " (a particle diameter, or none for a type without parcels such as the walls)");
 
   needs_sequence_ = settings_.mode == ParcelMode::ConstantDiameter && settings_.classes.size() > 1;
   if (needs_sequence_) {
@@ -88,7 +94,19 @@ void FixParcel::assign(int i)
                   id, who, diameter, D, 0.5 * D, group->names[igroup]);
     error->one(FLERR, msg);
   }
-  if (!needs_sequence_) {
+  if (settings_.by_type()) {
+    const double dp = settings_.type_diameters[atom->type[i] - 1];
+    if (dp == kNoParcels) {
+      char msg[512];
+      std::snprintf(msg, sizeof msg,
+                    "fix %s parcel: an atom of type %d is in group %s, but 'dp_by_type' gives none for type %d; "
+                    "allowed: parcels of the types with a diameter, or atoms outside the fix group",
+                    id, atom->type[i], group->names[igroup], atom->type[i]);
+      error->one(FLERR, msg);
+    }
+    d[DP] = dp;
+    d[NP] = particles_per_parcel(D, dp);
+  } else if (!needs_sequence_) {
     d[DP] = settings_.classes.front().diameter;
     d[NP] = particles_per_parcel(D, d[DP]);
   } else {
@@ -161,6 +179,8 @@ void FixParcel::write_restart(FILE* fp)
     list.push_back(c.diameter);
     list.push_back(c.mass_fraction);
   }
+  list.push_back(double(settings_.type_diameters.size()));
+  list.insert(list.end(), settings_.type_diameters.begin(), settings_.type_diameters.end());
   list.push_back(assigned_);
   write_global_state(comm->me, fp, list);
 }
@@ -168,7 +188,8 @@ void FixParcel::write_restart(FILE* fp)
 void FixParcel::restart(char* buf)
 {
   const double* list = reinterpret_cast<const double*>(buf);
-  if (static_cast<int>(list[0]) != kRestartVersion)
+  const int version = static_cast<int>(list[0]);
+  if (version != 1 && version != kRestartVersion)
     fail("fix parcel: the restart file holds an unknown version of this fix's state");
   std::size_t n = 1;
   const int mode = static_cast<int>(list[n++]);
@@ -180,6 +201,10 @@ void FixParcel::restart(char* buf)
   for (std::size_t k = 0; k < nclasses; ++k, n += 2)
     if (same && (list[n] != settings_.classes[k].diameter || list[n + 1] != settings_.classes[k].mass_fraction))
       same = false;
+  const std::size_t ntypes = version == 1 ? 0 : static_cast<std::size_t>(list[n++]);
+  same = same && ntypes == settings_.type_diameters.size() &&
+         std::equal(list + n, list + n + ntypes, settings_.type_diameters.begin());
+  n += ntypes;
   assigned_ = same ? list[n] : 0.0;
   if (!same && comm->me == 0)
     error->warning(FLERR, "fix parcel: settings differ from the restart file; dp and np of the restored "
@@ -207,7 +232,10 @@ void FixParcel::apply_scaling()
       fail(std::string("fix parcel: fix ") + other->id + " already scales the contact coefficients; only one "
            "fix parcel may use scaling linear");
   }
-  const std::string msg = scaling_.apply(lmp, settings_.uniform_scale_factor(), style);
+  const ParcelSettings& s = settings_;
+  const std::string msg = scaling_.apply(
+      lmp, [&s](int type_i, int type_j) { return s.pair_scale_factor(type_i, type_j); },
+      s.by_type() ? static_cast<int>(s.type_diameters.size()) : 0, style);
   if (!msg.empty()) fail(msg);
 }
 
@@ -217,6 +245,30 @@ void FixParcel::init()
   std::string msg = scaling_.check_intact(lmp, id);
   if (msg.empty()) msg = ContactScaling::check_contact_models(lmp);
   if (!msg.empty()) fail(msg);
+  if (settings_.by_type()) check_one_density();
+}
+
+// The pair rule of dp_by_type (equal_mass_pair_scale_factor) holds for parcels of one mass, i.e. of one
+// density, since they have one diameter. Atoms inserted in a run are checked at the next run's start.
+void FixParcel::check_one_density()
+{
+  double range[2] = {-INFINITY, -INFINITY};  // {-lowest, highest} density of the fix's atoms
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (atom->mask[i] & groupbit) {
+      range[0] = std::max(range[0], -atom->density[i]);
+      range[1] = std::max(range[1], atom->density[i]);
+    }
+  double global[2];
+  MPI_Allreduce(range, global, 2, MPI_DOUBLE, MPI_MAX, world);
+  const double lowest = -global[0], highest = global[1];
+  if (highest - lowest > kDensityTolerance * highest) {
+    char msg[512];
+    std::snprintf(msg, sizeof msg,
+                  "fix %s parcel: scaling linear with dp_by_type scales each type pair for parcels of one mass, "
+                  "but the parcels' densities range from %.9g to %.9g; allowed: one particle density for every "
+                  "type (or scaling none)", id, lowest, highest);
+    fail(msg);
+  }
 }
 
 void FixParcel::print_contact_values()
@@ -226,7 +278,14 @@ void FixParcel::print_contact_values()
   out.precision(6);
   out << "fix " << id << " parcel: mode " << to_string(settings_.mode) << ", scaling "
       << to_string(settings_.scaling);
-  if (settings_.scaling == CollisionScaling::Linear) {
+  if (settings_.scaling == CollisionScaling::Linear && settings_.by_type()) {
+    out << ", l of each type pair (D/dp of a parcel type with itself and with a type without parcels, "
+           "((np_i + np_j)/2)^(1/3) of two parcel types):";
+    const int ntypes = static_cast<int>(settings_.type_diameters.size());
+    for (int ti = 1; ti <= ntypes; ++ti)
+      for (int tj = ti; tj <= ntypes; ++tj) out << " " << ti << "-" << tj << " " << settings_.pair_scale_factor(ti, tj);
+    out << "; contact coefficients in force:\n" << scaling_.describe();
+  } else if (settings_.scaling == CollisionScaling::Linear) {
     out << ", l = D/dp = " << settings_.uniform_scale_factor() << "; contact coefficients in force:\n"
         << scaling_.describe();
   } else {

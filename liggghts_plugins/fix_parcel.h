@@ -1,6 +1,6 @@
 // fix ID group parcel mode constant_np np N [scaling none|linear]
-// fix ID group parcel mode constant_diameter diameter D (dp d | distribution d1 f1 d2 f2 ...)
-//                     [seed S] [scaling none|linear]
+// fix ID group parcel mode constant_diameter diameter D (dp d | distribution d1 f1 d2 f2 ... |
+//                     dp_by_type d1 d2 ... dN) [seed S] [scaling none|linear]
 //
 // Makes the spheres of the group coarse-grained parcels: per-atom real particle diameter dp and real
 // particles per parcel np (columns 1 and 2 of the per-atom array: `dump custom ... f_ID[1] f_ID[2]`).
@@ -48,6 +48,7 @@ class FixParcel : public PerAtomColumnsFix {
   void assign(int i);
   void resolve_pending();
   void apply_scaling();
+  void check_one_density();
   void print_contact_values();
   [[noreturn]] void fail(const std::string& msg);
 

@@ -44,6 +44,14 @@ inline HookeCoefficients scale_linear(const HookeCoefficients& c, double l)
   return s;
 }
 
+// l of the contact of two parcels of the same mass M (one parcel diameter D, one density) holding np_i and
+// np_j particles (dp_by_type: two size classes of one parcel diameter). Linear scaling keeps e exactly for
+// any l that is the cube root of the ratio of the effective masses (scale_linear above), and here
+//   M_eff / m_eff = (M/2) / (m_i m_j / (m_i + m_j)) = (M/m_i + M/m_j) / 2 = (np_i + np_j) / 2,
+// so l = ((np_i + np_j) / 2)^(1/3), which is D/dp for np_i = np_j. Against a wall (infinite mass)
+// M_eff / m_eff = M/m_i = np_i: l = D/dp_i.
+inline double equal_mass_pair_scale_factor(double np_i, double np_j) { return std::cbrt(0.5 * (np_i + np_j)); }
+
 // Damped linear oscillator of one normal contact (absolute damping g_abs [kg/s]).
 inline double damping_ratio(double kn, double gamma_abs, double m_eff)
 {

@@ -1,5 +1,6 @@
 #include "parcel_settings.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -15,7 +16,18 @@ namespace {
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
-const std::string kKeywords = "mode, np, diameter, dp, distribution, seed, scaling";
+const std::vector<std::string> kKeywordList = {"mode", "np", "diameter", "dp", "distribution", "dp_by_type", "seed",
+                                                "scaling"};
+const std::set<std::string> kKeywordSet(kKeywordList.begin(), kKeywordList.end());
+
+std::string keyword_names()
+{
+  std::string names;
+  for (const std::string& k : kKeywordList) names += (names.empty() ? "" : ", ") + k;
+  return names;
+}
+const std::string kTypeDiameterAllowed =
+    "a particle diameter > 0 and <= diameter, or none (an atom type without parcels, e.g. the walls)";
 
 }  // namespace
 
@@ -43,6 +55,17 @@ double ParcelSettings::uniform_scale_factor() const
   return 0.0;
 }
 
+double ParcelSettings::pair_scale_factor(int type_i, int type_j) const
+{
+  if (!by_type()) return uniform_scale_factor();
+  const double dp_i = type_diameters.at(type_i - 1), dp_j = type_diameters.at(type_j - 1);
+  if (dp_i == kNoParcels && dp_j == kNoParcels) return 1.0;
+  if (dp_j == kNoParcels) return parcel_diameter / dp_i;
+  if (dp_i == kNoParcels) return parcel_diameter / dp_j;
+  return equal_mass_pair_scale_factor(particles_per_parcel(parcel_diameter, dp_i),
+                                      particles_per_parcel(parcel_diameter, dp_j));
+}
+
 const char* to_string(ParcelMode mode)
 {
   return mode == ParcelMode::ConstantNp ? "constant_np" : "constant_diameter";
@@ -57,7 +80,8 @@ ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
 {
   ParcelSettings s;
   std::set<std::string> seen;
-  bool have_mode = false, have_np = false, have_diameter = false, have_dp = false, have_dist = false;
+  bool have_mode = false, have_np = false, have_diameter = false, have_dp = false, have_dist = false,
+       have_by_type = false;
   std::size_t i = 0;
   auto value_of = [&](const std::string& key, const char* allowed) -> const std::string& {
     if (i + 1 >= args.size()) fail("keyword '" + key + "' needs a value (" + allowed + ")");
@@ -131,6 +155,28 @@ ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
       s.classes = classes;
       have_dist = true;
       i = j;
+    } else if (key == "dp_by_type") {
+      // the values run up to the next keyword, so that a bad value is named as one
+      std::size_t j = i + 1;
+      std::vector<double> diameters;
+      for (; j < args.size() && !kKeywordSet.count(args[j]); ++j) {
+        const std::string type = std::to_string(diameters.size() + 1);
+        if (args[j] == "none") {
+          diameters.push_back(kNoParcels);
+        } else if (is_number(args[j]) && std::strtod(args[j].c_str(), nullptr) > 0.0) {
+          diameters.push_back(std::strtod(args[j].c_str(), nullptr));
+        } else {
+          fail("keyword 'dp_by_type' got " + quoted(args[j]) + " for atom type " + type + "; allowed: " +
+               kTypeDiameterAllowed);
+        }
+      }
+      if (diameters.empty())
+        fail("keyword 'dp_by_type' needs one value per atom type 1, 2, ...; allowed per type: " + kTypeDiameterAllowed);
+      if (std::all_of(diameters.begin(), diameters.end(), [](double d) { return d == kNoParcels; }))
+        fail("keyword 'dp_by_type' got none for every atom type; allowed: a particle diameter for at least one type");
+      s.type_diameters = diameters;
+      have_by_type = true;
+      i = j;
     } else if (key == "seed") {
       const double v = parse_number(key, value_of(key, "a positive integer"));
       if (!(v >= 1.0 && v <= 4294967295.0 && v == std::floor(v)))
@@ -144,24 +190,26 @@ ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
       else fail("keyword 'scaling' got " + quoted(v) + "; allowed: none, linear");
       i += 2;
     } else {
-      fail("unknown keyword " + quoted(key) + "; allowed keywords: " + kKeywords);
+      fail("unknown keyword " + quoted(key) + "; allowed keywords: " + keyword_names());
     }
   }
 
   if (!have_mode) fail("keyword 'mode' is missing; allowed: mode constant_np | mode constant_diameter");
   if (s.mode == ParcelMode::ConstantNp) {
     if (!have_np) fail("mode constant_np needs keyword 'np' (real particles per parcel, >= 1)");
-    if (have_diameter || have_dp || have_dist)
-      fail(std::string("keyword '") + (have_diameter ? "diameter" : have_dp ? "dp" : "distribution") +
+    if (have_diameter || have_dp || have_dist || have_by_type)
+      fail(std::string("keyword '") +
+           (have_diameter ? "diameter" : have_dp ? "dp" : have_dist ? "distribution" : "dp_by_type") +
            "' is not allowed with mode constant_np (dp follows from the inserted diameter and np); "
            "use mode constant_diameter");
   } else {
     if (have_np)
       fail("keyword 'np' is not allowed with mode constant_diameter (np = (D/dp)^3 per parcel)");
     if (!have_diameter) fail("mode constant_diameter needs keyword 'diameter' (the parcel diameter D)");
-    if (have_dp && have_dist) fail("keywords 'dp' and 'distribution' exclude each other; give one");
-    if (!have_dp && !have_dist)
-      fail("mode constant_diameter needs keyword 'dp' or 'distribution' (real particle diameters)");
+    if (int(have_dp) + int(have_dist) + int(have_by_type) > 1)
+      fail("keywords 'dp', 'distribution' and 'dp_by_type' exclude each other; give one");
+    if (!have_dp && !have_dist && !have_by_type)
+      fail("mode constant_diameter needs keyword 'dp', 'distribution' or 'dp_by_type' (real particle diameters)");
     for (const SizeClass& c : s.classes)
       if (c.diameter > s.parcel_diameter * (1.0 + 1e-12)) {
         std::ostringstream msg;
@@ -169,10 +217,18 @@ ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
             << " (keyword '" << (have_dp ? "dp" : "distribution") << "'); allowed: dp <= diameter (np >= 1)";
         fail(msg.str());
       }
+    for (std::size_t t = 0; t < s.type_diameters.size(); ++t)
+      if (s.type_diameters[t] > s.parcel_diameter * (1.0 + 1e-12)) {
+        std::ostringstream msg;
+        msg << "keyword 'dp_by_type' got " << s.type_diameters[t] << " for atom type " << t + 1
+            << ", larger than the parcel diameter " << s.parcel_diameter << "; allowed: " << kTypeDiameterAllowed;
+        fail(msg.str());
+      }
     if (s.scaling == CollisionScaling::Linear && s.classes.size() > 1)
       fail("keyword 'scaling' linear needs one l = D/dp per type pair, but the distribution has " +
            std::to_string(s.classes.size()) +
-           " particle diameters; allowed: scaling none, or a single size (dp), or mode constant_np");
+           " particle diameters; allowed: scaling none, or a single size (dp), one size per atom type "
+           "(dp_by_type), or mode constant_np");
   }
   return s;
 }

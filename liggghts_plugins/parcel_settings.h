@@ -23,17 +23,28 @@ struct SizeClass {
 enum class ParcelMode { ConstantNp, ConstantDiameter };
 enum class CollisionScaling { None, Linear };
 
+// dp_by_type value of an atom type that holds no parcels of the fix (`none`, e.g. the wall type).
+constexpr double kNoParcels = 0.0;
+
 struct ParcelSettings {
   ParcelMode mode = ParcelMode::ConstantNp;
   double np = 1.0;                  // constant_np: real particles per parcel (>= 1)
   double parcel_diameter = 0.0;     // constant_diameter: parcel (collision) diameter D
   std::vector<SizeClass> classes;   // constant_diameter: one class (`dp`) or a distribution
+  // constant_diameter with dp_by_type: entry t-1 is the real particle diameter of atom type t, or
+  // kNoParcels; empty otherwise
+  std::vector<double> type_diameters;
   std::uint32_t seed = 12345679;    // orders classes with equal fractions in the assignment sequence
   CollisionScaling scaling = CollisionScaling::None;
 
-  // l = D/dp if it is the same for every parcel of the fix (constant_np, or a single size class);
-  // 0 otherwise.
+  bool by_type() const { return !type_diameters.empty(); }
+  // l = D/dp if it is the same for every parcel of the fix (constant_np, or a single size class `dp`);
+  // 0 otherwise (a distribution, or dp_by_type).
   double uniform_scale_factor() const;
+  // l of the contact between atom types type_i and type_j (1-based) under scaling linear: the uniform l,
+  // or with dp_by_type equal_mass_pair_scale_factor (parcel_math.h) of the two types' np, D/dp of the parcel type
+  // against a type without parcels (a wall), and 1 between two types without parcels (no such contact).
+  double pair_scale_factor(int type_i, int type_j) const;
 };
 
 // Parses the arguments after the style name, e.g. {"mode","constant_np","np","8","scaling","linear"}.

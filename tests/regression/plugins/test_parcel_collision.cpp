@@ -1,10 +1,13 @@
 // Two parcels colliding head-on (no gravity) with `scaling linear`, l = 1, 2, 4 (np = 1, 8, 64):
 // the measured restitution coefficient equals the particle-level one and the contact duration grows
 // in proportion to l. Both damping conventions of hooke/stiffness (mass-specific gamman and
-// absolute_damping on with gamman_abs) are checked.
+// absolute_damping on with gamman_abs) are checked. With dp_by_type (two particle sizes in parcels of one
+// diameter) the contact of the two types and that of a type with the wall keep the restitution of the
+// particle pair and last l times as long, l of the pair's rule.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "fix_parcel.h"
 #include "liggghts_session.h"
@@ -33,16 +36,48 @@ double particle_gamma_abs()
   return 2.0 * zeta * std::sqrt(kKn * particle_m_eff());
 }
 
+void set_variable(Session& s, const std::string& name, double value)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", value);
+  s.cmd("variable " + name + " equal " + buf);
+}
+
+// Steps one DEM step at a time until the contact is over: gap() < 0 while in contact, relative_velocity() of
+// the parcels (or of the parcel against the wall) before the contact was v_before.
+Collision measure(Session& s, const std::function<double()>& gap, const std::function<double()>& relative_velocity,
+                  double v_before, double dt)
+{
+  long steps = 0;
+  bool touched = false;
+  for (int n = 0; n < 200000; ++n) {
+    s.cmd("run 1 pre no post no");
+    if (gap() < 0) {
+      ++steps;
+      touched = true;
+    } else if (touched) {
+      return {-relative_velocity() / v_before, steps, steps * dt};
+    }
+  }
+  ADD_FAILURE() << "the contact did not end";
+  return {0, 0, 0};
+}
+
+// x, z position and x, z velocity of every atom (on any rank), by tag
+std::map<int, std::array<double, 4>> atom_states(Session& s)
+{
+  LAMMPS_NS::Atom* atom = s.lmp()->atom;
+  return gather_by_tag<4>(s.lmp(), [&](int i) {
+    return std::array<double, 4>{atom->x[i][0], atom->x[i][2], atom->v[i][0], atom->v[i][2]};
+  });
+}
+
 Collision collide(double l, bool absolute, double dt, const char* scaling = "linear")
 {
   const double D = kDp * l, np = l * l * l;
   const double g_abs = particle_gamma_abs(), m_eff = particle_m_eff();
   Session s("none");
-  auto var = [&](const std::string& name, double value) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", value);
-    s.cmd("variable " + name + " equal " + buf);
-  };
+  auto var = [&](const std::string& name, double value) { set_variable(s, name, value); };
   var("D", D);
   var("x0", 0.5 * D * 1.05);
   var("skin", 0.2 * D);
@@ -60,30 +95,41 @@ Collision collide(double l, bool absolute, double dt, const char* scaling = "lin
   s.cmd(fix);
   s.cmd("run 0");
 
-  auto state = [&]() {
-    // x position and x velocity of atoms 1 and 2 (on any rank)
-    const auto v = gather_by_tag<2>(s.lmp(), [&](int i) {
-      return std::array<double, 2>{s.lmp()->atom->x[i][0], s.lmp()->atom->v[i][0]};
-    });
-    return v;
-  };
-  const double v_before = -1.0;  // v2 - v1
-  long steps = 0;
-  bool touched = false;
-  for (int n = 0; n < 200000; ++n) {
-    s.cmd("run 1 pre no post no");
-    const auto st = state();
-    const double gap = st.at(2)[0] - st.at(1)[0] - D;
-    if (gap < 0) {
-      ++steps;
-      touched = true;
-    } else if (touched) {
-      const double v_after = st.at(2)[1] - st.at(1)[1];
-      return {-v_after / v_before, steps, steps * dt};
-    }
-  }
-  ADD_FAILURE() << "the parcels did not separate";
-  return {0, 0, 0};
+  std::map<int, std::array<double, 4>> st;
+  return measure(
+      s, [&]() { st = atom_states(s); return st.at(2)[0] - st.at(1)[0] - D; },
+      [&]() { return st.at(2)[2] - st.at(1)[2]; }, -1.0, dt);
+}
+
+// dp_by_type: parcels of 4 mm holding 1 mm (type 1, np 64) and 2 mm (type 2, np 8) particles, scaling linear.
+constexpr double kParcelD = 0.004, kDpSmall = 0.001, kDpLarge = 0.002;
+double particle_mass(double d) { return kRho * M_PI / 6.0 * d * d * d; }
+
+// A type-1 parcel hitting a type-2 parcel (against_wall false) or the wall, with the particle-level
+// mass-specific dampings g12 (types 1-2) and g13 (type 1 - wall).
+Collision collide_by_type(bool against_wall, double g12, double g13, double dt)
+{
+  Session s("none");
+  set_variable(s, "D", kParcelD);
+  set_variable(s, "x0", 0.5 * kParcelD * 1.05);
+  set_variable(s, "skin", 0.2 * kParcelD);
+  set_variable(s, "kn", kKn);
+  set_variable(s, "kt", 2.0 / 7.0 * kKn);
+  set_variable(s, "g12", g12);
+  set_variable(s, "g13", g13);
+  set_variable(s, "dt", dt);
+  set_variable(s, "against_wall", against_wall ? 1 : 0);
+  s.file(kDir + "/collision_types.in");
+  s.cmd("fix p all parcel mode constant_diameter diameter 0.004 dp_by_type 0.001 0.002 none scaling linear");
+  s.cmd("run 0");
+  std::map<int, std::array<double, 4>> st;
+  if (against_wall)
+    return measure(
+        s, [&]() { st = atom_states(s); return st.at(1)[1] - 0.5 * kParcelD; }, [&]() { return st.at(1)[3]; }, -1.0,
+        dt);
+  return measure(
+      s, [&]() { st = atom_states(s); return st.at(2)[0] - st.at(1)[0] - kParcelD; },
+      [&]() { return st.at(2)[2] - st.at(1)[2]; }, -1.0, dt);
 }
 
 }  // namespace
@@ -122,4 +168,33 @@ TEST(ParcelCollision, LinearScalingKeepsRestitutionAndScalesDuration)
            e_particle, static_cast<double>(c.steps) / ref.steps, expected_ratio);
   EXPECT_NEAR(static_cast<double>(c.steps) / ref.steps, expected_ratio, 0.05);
   EXPECT_GT(c.e, e_particle + 0.1);
+}
+
+TEST(ParcelCollision, DiameterByTypeKeepsRestitutionOfEachPair)
+{
+  // the particle pairs: 1 mm with 2 mm (m_eff = m1 m2/(m1 + m2)) and 1 mm with the wall (m_eff = m1), each with
+  // the mass-specific damping that gives e = kTargetE
+  const double m1 = particle_mass(kDpSmall), m2 = particle_mass(kDpLarge);
+  const double ln = std::log(kTargetE), zeta = -ln / std::sqrt(M_PI * M_PI + ln * ln);
+  struct Pair {
+    const char* name;
+    bool against_wall;
+    double m_eff, l;
+  };
+  const Pair pairs[] = {{"types 1-2", false, m1 * m2 / (m1 + m2), std::cbrt(0.5 * (64.0 + 8.0))},
+                        {"type 1 - wall", true, m1, kParcelD / kDpSmall}};
+  const double g12 = 2.0 * zeta * std::sqrt(kKn / pairs[0].m_eff), g13 = 2.0 * zeta * std::sqrt(kKn / pairs[1].m_eff);
+  const double dt = contact_duration(kKn, g12 * pairs[0].m_eff, pairs[0].m_eff) / 100.0;
+  for (const Pair& p : pairs) {
+    const double g = p.against_wall ? g13 : g12;
+    const double e_particle = restitution_coefficient(kKn, g * p.m_eff, p.m_eff);
+    const double tc_particle = contact_duration(kKn, g * p.m_eff, p.m_eff);
+    const Collision c = collide_by_type(p.against_wall, g12, g13, dt);
+    const double e_err = c.e / e_particle - 1.0, t_err = c.duration / (p.l * tc_particle) - 1.0;
+    PF_PRINT("[ collision ] dp_by_type 1/2 mm in 4 mm parcels, %s: l = %.6f; e = %.6f (particle pair %.6f, error "
+             "%+.3f %%), contact %ld steps = %.5g s (l t_c of the particle pair %.5g s, error %+.2f %%)\n",
+             p.name, p.l, c.e, e_particle, 100 * e_err, c.steps, c.duration, p.l * tc_particle, 100 * t_err);
+    EXPECT_LT(std::fabs(e_err), 0.01);
+    EXPECT_LT(std::fabs(t_err), 0.02);
+  }
 }

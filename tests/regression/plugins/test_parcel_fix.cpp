@@ -1,6 +1,7 @@
 // fix parcel inside LIGGGHTS (in-process, 1-3 MPI ranks): dp/np of inserted parcels, parcel mass,
 // attachment of dp/np to the right atoms under migration between ranks, dump columns, the size
-// distribution assignment, and the restart round trip (write_restart, clear, read_restart).
+// distribution assignment, the restart round trip (write_restart, clear, read_restart), and dp_by_type
+// (two size classes of one parcel diameter kept as atom types; per-type-pair linear scaling).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "atom.h"
 #include "fix_parcel.h"
 #include "fix_parcel_implicit_drag.h"
+#include "fix_property_global.h"
 #include "liggghts_session.h"
 #include "size_class_sequence.h"
 #include "update.h"
@@ -41,6 +43,46 @@ double tag_function(int tag) { return 1e-3 * (1.0 + (tag % 97) / 100.0); }
 
 // marker values for the drag fix's columns: a negligible kappa (M/kappa ~ 1e8 s) and u_f = f(tag)
 std::array<double, 4> drag_marker(int tag) { return {1e-12 * (1 + tag % 7), 1.0 * tag, -1.0 * tag, 0.5 * tag}; }
+
+// Two atom types of parcels (D = 4 mm, density 2500) holding 1 mm and 2 mm particles; type 3 is the walls.
+const std::string kByType = "mode constant_diameter diameter 0.004 dp_by_type 0.001 0.002 none";
+constexpr double kByTypeDp[2] = {0.001, 0.002}, kByTypeNp[2] = {64.0, 8.0};
+
+void setup_two_types(Session& s, const std::string& parcel_args)
+{
+  s.cmd("variable R equal 0.002");
+  s.cmd("variable rho2 equal 2500");
+  s.file(kDir + "/two_types_box.in");
+  s.file(kDir + "/two_types_setup.in");
+  s.cmd("fix p all parcel " + parcel_args);
+}
+
+// Parcels per type and the largest relative deviations of dp, np and LIGGGHTS' mass from dp_by_type's
+// dp, (D/dp)^3 and np m_p, over all ranks.
+struct ByTypeCheck {
+  long count[2] = {0, 0};
+  double dp = 0, np = 0, mass = 0;
+};
+
+ByTypeCheck check_by_type(Session& s)
+{
+  auto* fp = s.fix<FixParcel>("p");
+  LAMMPS_NS::Atom* atom = s.lmp()->atom;
+  ByTypeCheck c;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const int t = atom->type[i] - 1;
+    ++c.count[t];
+    c.dp = std::max(c.dp, std::fabs(fp->dp(i) / kByTypeDp[t] - 1.0));
+    c.np = std::max(c.np, std::fabs(fp->np(i) / kByTypeNp[t] - 1.0));
+    const double m_p = atom->density[i] * M_PI / 6.0 * std::pow(fp->dp(i), 3);
+    c.mass = std::max(c.mass, std::fabs(atom->rmass[i] / (fp->np(i) * m_p) - 1.0));
+  }
+  for (long& n : c.count) n = sum_all(n);
+  c.dp = max_all(c.dp);
+  c.np = max_all(c.np);
+  c.mass = max_all(c.mass);
+  return c;
+}
 
 // owner rank of every atom, by tag
 std::map<int, std::array<double, 1>> owners(Session& s)
@@ -249,4 +291,93 @@ TEST(FixParcel, DistributionDumpAndRestart)
     for (int k = 0; k < 3; ++k) EXPECT_LT(std::fabs(c2[k] - N * f[k]), 1.0);
   }
   remove_scratch_dir(dir);
+}
+
+TEST(FixParcel, DiameterByTypeKeepsClassesAsTypes)
+{
+  const std::string dir = scratch_dir("by_type");
+  Session s(dir + "/log.by_type");
+  setup_two_types(s, kByType);
+  insert(s, 1, 150, 32452843);
+  s.cmd("run 300");
+  const long natoms = static_cast<long>(s.lmp()->atom->natoms);
+  ByTypeCheck c = check_by_type(s);
+  PF_PRINT("[ parcel ] dp_by_type 1/2 mm, D 4 mm: %ld + %ld parcels of types 1 + 2 (%ld atoms); max relative "
+           "deviation of dp %.2e, np %.2e (64, 8), mass from np m_p %.2e\n", c.count[0], c.count[1], natoms, c.dp,
+           c.np, c.mass);
+  EXPECT_EQ(c.count[0] + c.count[1], natoms);
+  EXPECT_GT(c.count[0], natoms / 4);  // 50/50 by mass of equal masses; LIGGGHTS draws the types
+  EXPECT_GT(c.count[1], natoms / 4);
+  EXPECT_EQ(c.dp, 0.0);
+  EXPECT_LT(c.np, 1e-14);
+  EXPECT_LT(c.mass, 1e-12);
+
+  // restart round trip (the fix's restart state holds the diameters per type), then more parcels
+  auto* fp = s.fix<FixParcel>("p");
+  const auto before = gather_by_tag<3>(s.lmp(), [&](int i) {
+    return std::array<double, 3>{fp->dp(i), fp->np(i), double(s.lmp()->atom->type[i])};
+  });
+  s.cmd("write_restart " + dir + "/by_type.restart");
+  s.clear();
+  s.cmd("variable R equal 0.002");
+  s.cmd("variable rho2 equal 2500");
+  s.cmd("read_restart " + dir + "/by_type.restart");
+  s.file(kDir + "/two_types_setup.in");
+  s.cmd("fix p all parcel " + kByType);
+  s.cmd("run 0");
+  fp = s.fix<FixParcel>("p");
+  const auto after = gather_by_tag<3>(s.lmp(), [&](int i) {
+    return std::array<double, 3>{fp->dp(i), fp->np(i), double(s.lmp()->atom->type[i])};
+  });
+  long differ = 0;
+  for (const auto& [tag, v] : before) differ += !after.count(tag) || after.at(tag) != v;
+  insert(s, 2, natoms + 60, 67867967);
+  s.cmd("run 200");
+  c = check_by_type(s);
+  const long n2 = static_cast<long>(s.lmp()->atom->natoms);
+  PF_PRINT("[ parcel ] dp_by_type restart round trip: %zu parcels read back, %ld with different dp/np/type; "
+           "after inserting more: %ld + %ld parcels, max deviation dp %.2e, np %.2e, mass %.2e\n", after.size(),
+           differ, c.count[0], c.count[1], c.dp, c.np, c.mass);
+  EXPECT_EQ(static_cast<long>(after.size()), natoms);
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(n2, natoms);
+  EXPECT_EQ(c.count[0] + c.count[1], n2);
+  EXPECT_EQ(c.dp, 0.0);
+  EXPECT_LT(c.np, 1e-14);
+  EXPECT_LT(c.mass, 1e-12);
+  remove_scratch_dir(dir);
+}
+
+TEST(FixParcel, DiameterByTypeScalesEachTypePair)
+{
+  Session s("none");
+  s.cmd("variable R equal 0.002");
+  s.cmd("variable rho2 equal 2500");
+  s.file(kDir + "/two_types_box.in");
+  s.file(kDir + "/two_types_setup.in");
+  const std::vector<std::string> names = {"kn", "kt", "gn", "gt"};
+  std::map<std::string, std::array<double, 9>> original;
+  for (const std::string& name : names)
+    for (int k = 0; k < 9; ++k) original[name][k] = s.fix<LAMMPS_NS::FixPropertyGlobal>(name)->compute_array(k / 3, k % 3);
+  s.cmd("fix p all parcel " + kByType + " scaling linear");
+  // l of each pair: D/dp = 4 and 2 for a type with itself and with the walls, ((64 + 8)/2)^(1/3) = 36^(1/3)
+  // for types 1-2, 1 for walls-walls; kn, kt x l, gamman, gammat (mass-specific) / l
+  const double l12 = std::cbrt(36.0);
+  const std::array<double, 9> l = {4.0, l12, 4.0, l12, 2.0, 2.0, 4.0, 2.0, 1.0};
+  double worst = 0;
+  for (const std::string& name : names)
+    for (int k = 0; k < 9; ++k) {
+      const double expected = original[name][k] * (name[0] == 'k' ? l[k] : 1.0 / l[k]);
+      const double got = s.fix<LAMMPS_NS::FixPropertyGlobal>(name)->compute_array(k / 3, k % 3);
+      worst = std::max(worst, std::fabs(got / expected - 1.0));
+    }
+  PF_PRINT("[ parcel ] dp_by_type scaling linear: l 1-1 4, 1-2 %.6f, 2-2 2, walls 4 / 2 / 1; kn, kt, gamman, gammat "
+           "of all 9 pairs: max relative deviation from original x l (k) or / l (gamma) %.2e; gamman 1-2 %g -> %g\n",
+           l12, worst, original["gn"][1], s.fix<LAMMPS_NS::FixPropertyGlobal>("gn")->compute_array(0, 1));
+  EXPECT_LT(worst, 1e-15);
+  // parcels of one density run (the fix checks it at every run's start)
+  insert(s, 1, 60, 32452843);
+  s.cmd("run 10");
+  s.cmd("run 10");
+  EXPECT_GT(s.lmp()->atom->natoms, 30);
 }

@@ -53,3 +53,30 @@ TEST(ParcelMath, LinearScalingKeepsRestitutionAndScalesContactTime)
     }
   }
 }
+
+// dp_by_type: two parcels of one diameter and mass holding particles of two sizes (one density). The pair's
+// l = ((np_i + np_j)/2)^(1/3) makes linear scaling keep the particle pair's restitution and stretch its
+// contact duration by l.
+TEST(ParcelMath, EqualMassPairScaleFactorKeepsRestitution)
+{
+  const double D = 0.005, rho = 2526.0, kn = 100.0;
+  auto mass = [&](double d) { return rho * M_PI / 6.0 * d * d * d; };
+  for (const auto& [d_i, d_j] : {std::pair{0.0015, 0.0025}, std::pair{0.001, 0.004}, std::pair{0.002, 0.002}}) {
+    const double m_eff = mass(d_i) * mass(d_j) / (mass(d_i) + mass(d_j)), M_eff = 0.5 * mass(D);
+    const double l = equal_mass_pair_scale_factor(particles_per_parcel(D, d_i), particles_per_parcel(D, d_j));
+    EXPECT_NEAR(l * l * l, M_eff / m_eff, 1e-12 * M_eff / m_eff);
+    HookeCoefficients c;
+    c.kn = kn;
+    c.gamman = 0.05 * 2.0 * std::sqrt(kn / m_eff);  // mass-specific, damping ratio 0.05
+    const HookeCoefficients s = scale_linear(c, l);
+    const double e = restitution_coefficient(s.kn, s.gamman * M_eff, M_eff);
+    const double e1 = restitution_coefficient(kn, c.gamman * m_eff, m_eff);
+    const double t = contact_duration(s.kn, s.gamman * M_eff, M_eff);
+    const double t1 = contact_duration(kn, c.gamman * m_eff, m_eff);
+    std::printf("[ scaling ] dp_by_type D=%g dp %g/%g: l=%.6f e=%.12f (particles %.12f) t_c/(l t_c1)=%.12f\n", D, d_i,
+                d_j, l, e, e1, t / (l * t1));
+    EXPECT_NEAR(e, e1, 1e-12);
+    EXPECT_NEAR(t / (l * t1), 1.0, 1e-12);
+  }
+  EXPECT_NEAR(equal_mass_pair_scale_factor(8.0, 8.0), 2.0, 1e-15);
+}

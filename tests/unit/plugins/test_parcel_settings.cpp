@@ -2,6 +2,7 @@
 // the error messages.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -74,6 +75,35 @@ TEST(ParcelSettings, ConstantDiameter)
   EXPECT_NEAR(one.uniform_scale_factor(), 4.0, 1e-14);
 }
 
+TEST(ParcelSettings, DiameterByType)
+{
+  // two size classes of one parcel diameter kept as atom types 1 and 2; type 3 (walls) holds no parcels
+  const ParcelSettings s = parse("mode constant_diameter diameter 0.005 dp_by_type 0.0015 0.0025 none scaling linear");
+  EXPECT_EQ(s.mode, ParcelMode::ConstantDiameter);
+  EXPECT_TRUE(s.by_type());
+  EXPECT_TRUE(s.classes.empty());
+  EXPECT_EQ(s.type_diameters, (std::vector<double>{0.0015, 0.0025, kNoParcels}));
+  EXPECT_EQ(s.scaling, CollisionScaling::Linear);
+  EXPECT_EQ(s.uniform_scale_factor(), 0.0);
+  const double np1 = std::pow(0.005 / 0.0015, 3), np2 = 8.0;
+  EXPECT_NEAR(s.pair_scale_factor(1, 1), 0.005 / 0.0015, 1e-14);
+  EXPECT_NEAR(s.pair_scale_factor(2, 2), 2.0, 1e-14);
+  EXPECT_NEAR(s.pair_scale_factor(1, 2), std::cbrt(0.5 * (np1 + np2)), 1e-14);
+  EXPECT_EQ(s.pair_scale_factor(2, 1), s.pair_scale_factor(1, 2));
+  EXPECT_NEAR(s.pair_scale_factor(1, 3), 0.005 / 0.0015, 1e-14);  // against the wall: the parcel's own l
+  EXPECT_NEAR(s.pair_scale_factor(3, 2), 2.0, 1e-14);
+  EXPECT_EQ(s.pair_scale_factor(3, 3), 1.0);
+  // the values end at the next keyword, in any order of keywords
+  const ParcelSettings t = parse("dp_by_type 0.001 0.002 seed 7 mode constant_diameter diameter 0.004");
+  EXPECT_EQ(t.type_diameters, (std::vector<double>{0.001, 0.002}));
+  EXPECT_EQ(t.seed, 7u);
+  EXPECT_EQ(t.scaling, CollisionScaling::None);
+  // one diameter for every type is the uniform case
+  const ParcelSettings u = parse("mode constant_diameter diameter 0.004 dp_by_type 0.002 0.002 none scaling linear");
+  for (int i = 1; i <= 2; ++i)
+    for (int j = 1; j <= 3; ++j) EXPECT_NEAR(u.pair_scale_factor(i, j), 2.0, 1e-14);
+}
+
 TEST(ParcelSettings, Errors)
 {
   expect_error("", {"'mode' is missing"});
@@ -93,7 +123,7 @@ TEST(ParcelSettings, Errors)
   expect_error("mode constant_diameter dp 0.001", {"needs keyword 'diameter'"});
   expect_error("mode constant_diameter diameter 0 dp 0.001", {"'diameter'", "'0'", "> 0"});
   expect_error("mode constant_diameter diameter -0.01 dp 0.001", {"'diameter'", "'-0.01'", "> 0"});
-  expect_error("mode constant_diameter diameter 0.01", {"'dp' or 'distribution'"});
+  expect_error("mode constant_diameter diameter 0.01", {"'dp', 'distribution' or 'dp_by_type'"});
   expect_error("mode constant_diameter diameter 0.01 dp 0", {"'dp'", "'0'", "> 0"});
   expect_error("mode constant_diameter diameter 0.01 dp 0.02", {"0.02", "larger than the parcel diameter", "dp <= diameter"});
   expect_error("mode constant_diameter diameter 0.01 np 8 dp 0.001", {"'np' is not allowed"});
@@ -109,7 +139,21 @@ TEST(ParcelSettings, Errors)
   expect_error("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.001 0.5", {"twice", "distinct"});
   expect_error("mode constant_diameter diameter 0.01 dp 0.001 distribution 0.001 1", {"exclude each other"});
   expect_error("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5 scaling linear",
-               {"'scaling' linear", "2 particle diameters", "scaling none"});
+               {"'scaling' linear", "2 particle diameters", "scaling none", "dp_by_type"});
+  // dp_by_type
+  const std::string cd = "mode constant_diameter diameter 0.005 ";
+  expect_error(cd + "dp_by_type", {"'dp_by_type' needs one value per atom type", "none"});
+  expect_error(cd + "dp_by_type scaling none", {"'dp_by_type' needs one value per atom type"});
+  expect_error(cd + "dp_by_type 0.0015 abc 0.0025", {"'dp_by_type' got 'abc' for atom type 2", "> 0", "none"});
+  expect_error(cd + "dp_by_type -0.001 0.0025", {"'dp_by_type' got '-0.001' for atom type 1", "> 0 and <= diameter"});
+  expect_error(cd + "dp_by_type 0.0015 0", {"'dp_by_type' got '0' for atom type 2"});
+  expect_error(cd + "dp_by_type 0.0015 0.006 none", {"'dp_by_type' got 0.006 for atom type 2", "larger than the parcel "
+                                                     "diameter 0.005", "<= diameter"});
+  expect_error(cd + "dp_by_type none none", {"'dp_by_type' got none for every atom type", "at least one type"});
+  expect_error(cd + "dp_by_type 0.0015 0.0025 dp_by_type 0.0015 0.0025", {"'dp_by_type' given twice"});
+  expect_error(cd + "dp 0.0015 dp_by_type 0.0015 0.0025", {"'dp', 'distribution' and 'dp_by_type' exclude each other"});
+  expect_error(cd + "distribution 0.0015 1 dp_by_type 0.0015 0.0025", {"exclude each other"});
+  expect_error("mode constant_np np 8 dp_by_type 0.001 0.002", {"'dp_by_type' is not allowed with mode constant_np"});
   // within 1e-6 is accepted
   EXPECT_NO_THROW(parse("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5000009"));
 }

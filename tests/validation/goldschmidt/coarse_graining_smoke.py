@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""Short run of cases/goldschmidt_segregation/coarse_graining.py (issue 14): a third-width slice of the bed
+(0.05 m, 16 x 5 x 94 cells, 11,230 beads) fine and in the three coarse-grained variants, settled briefly and
+coupled for 0.02 s. The physics of so short a run means nothing; the test checks that the script runs every
+variant and writes the table, and that each bed is what it must be, from the parcels the runs wrote:
+  fine         11,230 parcels, np 1, dp 1.5 / 2.5 mm
+  np8_linear   round(11,230 / 8) parcels of 3 / 5 mm, np 8, dp 1.5 / 2.5 mm
+  d5mm_*       round(fine mass / 5 mm parcel mass) parcels of 5 mm, np (5/1.5)^3 and (5/2.5)^3 = 8
+each class with one np and dp, both classes present, and the solid mass of every coarse bed equal to the fine
+bed's within the mass of one of its parcels. The temporary folder is removed at the end.
+
+usage: coarse_graining_smoke.py PARCELFLOW MPIEXEC...
+"""
+import csv
+import math
+import os
+import shlex
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, copy_case, fail, run  # noqa: E402
+
+SCRIPT = os.path.join(CASES, "goldschmidt_segregation", "coarse_graining.py")
+NBEADS, WIDTH, DENSITY = 11230, 0.05, 2526.0
+SMALL, LARGE, COARSE = 1.5e-3, 2.5e-3, 5e-3
+
+
+def mass(d):
+    return DENSITY * math.pi / 6 * d ** 3
+
+
+def edit(case):
+    case["liggghts"]["variables"].update({"nbeads": str(NBEADS), "width": str(WIDTH), "settle_steps": "2000"})
+    case["mesh"]["lengths"][0] = WIDTH
+    case["mesh"]["cells"][0] = 16
+    case["output"]["fields_interval"] = 0.0
+    case["output"]["monitor_interval"] = 0.0025
+
+
+def main():
+    parcelflow, launcher = sys.argv[1], sys.argv[2:]
+    mpirun = list(launcher)
+    ranks = mpirun[mpirun.index("-np") + 1]
+    del mpirun[mpirun.index("-np"):mpirun.index("-np") + 2]
+    here_before = set(os.listdir("."))
+    with tempfile.TemporaryDirectory(prefix="pf_coarse_graining_") as work:
+        case = copy_case(os.path.join(CASES, "goldschmidt_segregation"), work, edit)
+        root = os.path.join(work, "runs")
+        stdout = run([sys.executable, SCRIPT, parcelflow, root, "--case", case, "--end", "0.02", "--start", "0.01",
+                      "--ranks", ranks, "--mpirun", shlex.join(mpirun)])
+        print(stdout)
+        if "table written" not in stdout:
+            fail("coarse_graining.py wrote no table")
+        rows = {r["variant"]: r for r in csv.DictReader(open(os.path.join(root, "coarse_graining.csv")))}
+        check(rows)
+    if os.path.exists(work):
+        fail(f"the temporary folder {work} is still there")
+    left = set(os.listdir(".")) - here_before
+    if left:
+        fail(f"the runs left {sorted(left)} in the working folder {os.getcwd()}")
+    print("PASS")
+
+
+def check(rows):
+    fine_mass = NBEADS / (0.5 / mass(SMALL) + 0.5 / mass(LARGE))  # 50/50 by mass
+    expected = {  # parcels, np small, np large, parcel diameters
+        "fine": (NBEADS, 1.0, 1.0, SMALL, LARGE),
+        "np8_linear": (round(NBEADS / 8), 8.0, 8.0, 2 * SMALL, 2 * LARGE),
+        "d5mm_none": (round(fine_mass / mass(COARSE)), (COARSE / SMALL) ** 3, 8.0, COARSE, COARSE),
+        "d5mm_linear": (round(fine_mass / mass(COARSE)), (COARSE / SMALL) ** 3, 8.0, COARSE, COARSE),
+    }
+    if set(rows) != set(expected):
+        fail(f"table rows {sorted(rows)}, expected {sorted(expected)}")
+    measured_fine = float(rows["fine"]["bed_mass_kg"])
+    for name, (parcels, np_small, np_large, d_small, d_large) in expected.items():
+        r = {k: (v if k in ("variant", "description", "window_s") else float(v)) for k, v in rows[name].items()}
+        largest = max(mass(d_small), mass(d_large))
+        print(f"[measured] {name}: {r['parcels']:.0f} parcels ({r['parcels_small']:.0f} small, {r['parcels_large']:.0f} "
+              f"large; expected {parcels}), np {r['np_small']:.6g} / {r['np_large']:.6g}, dp {r['dp_small_mm']:.6g} / "
+              f"{r['dp_large_mm']:.6g} mm, D {r['D_small_mm']:.6g} / {r['D_large_mm']:.6g} mm, bed mass "
+              f"{r['bed_mass_kg']:.6g} kg ({(r['bed_mass_kg'] - measured_fine) / largest:+.2f} of its largest parcel "
+              f"against the fine bed); DEM step {r['dem_step_s']:.4g} s = {r['steps_per_contact']:.1f} per contact; "
+              f"segregation {r['segregation']:.3g}, dp/(W/A) {r['dp_over_weight']:.3g}, run {r['total_wall_s']:.0f} s")
+        problems = []
+        if r["parcels"] != parcels or r["parcels_small"] + r["parcels_large"] != parcels:
+            problems.append(f"{r['parcels']:.0f} parcels, expected {parcels}")
+        if min(r["parcels_small"], r["parcels_large"]) < 0.3 * parcels * min(mass(d_small), mass(d_large)) / largest:
+            problems.append("a class has too few parcels for 50/50 by mass")
+        for what, got, want in (("np small", r["np_small"], np_small), ("np large", r["np_large"], np_large),
+                                ("dp small", r["dp_small_mm"], 1e3 * SMALL), ("dp large", r["dp_large_mm"], 1e3 * LARGE),
+                                ("D small", r["D_small_mm"], 1e3 * d_small), ("D large", r["D_large_mm"], 1e3 * d_large)):
+            if abs(got / want - 1) > 1e-9:
+                problems.append(f"{what} {got:.12g}, expected {want:.12g}")
+        if r["np_small_spread"] != 0 or r["np_large_spread"] != 0:
+            problems.append("a class holds parcels of different np")
+        if abs(r["bed_mass_kg"] - measured_fine) > largest:
+            problems.append(f"bed mass {r['bed_mass_kg']:.6g} kg differs from the fine {measured_fine:.6g} kg by more "
+                            f"than one parcel ({largest:.3g} kg)")
+        if abs(r["mass_vs_fine_parcels"] - (r["bed_mass_kg"] - measured_fine) / largest) > 1e-6:
+            problems.append(f"mass_vs_fine_parcels {r['mass_vs_fine_parcels']:.6g} disagrees with the masses")
+        if not r["steps_per_contact"] >= 10 or not all(math.isfinite(r[k]) for k in (
+                "segregation", "rms_small_mm", "rms_large_mm", "dp_over_weight", "loop_wall_s", "total_wall_s")):
+            problems.append("a table value is missing")
+        if problems:
+            fail(f"{name}: " + "; ".join(problems))
+
+
+if __name__ == "__main__":
+    main()
