@@ -48,6 +48,9 @@ VARIANTS = {
     "startup_ramp": ("inlet velocity ramped from 0 over 0.2 s instead of full flow at once",
                      {"boundaries.zmin": {"type": "velocity_inlet", "superficial_velocity": [0, 0, 1.1],
                                           "ramp_time": 0.2}}, {}),
+    "restitution_0.9": ("restitution 0.9 instead of 0.97 for every pair (damping x 3.4573)", {},
+                        {"damping": "448.721 349.888 317.293 349.888 208.547 147.464 317.293 147.464 147.464"}),
+    "bead_friction_0.3": ("bead-bead friction 0.3 instead of 0.10", {}, {"bead_friction": "0.30"}),
     "kick": ("left third of the settled bed kicked upwards at 0.3 m/s", {}, {"kick_vz": "0.3"}),
 }
 

@@ -52,6 +52,7 @@ struct CoupledRun::State {
   RunCounters counters;  // this rank's
   int stop_signal = 0;
   std::string last_checkpoint;
+  bool warned_slow_checkpoint = false;
 
   double wall_start = 0.0, next_progress = 0.0;
   ProgressState progress;
@@ -303,6 +304,7 @@ void writeParcels(CoupledRun::State& s) {
 // After every output of the step (Lethe #1097: a checkpoint taken before the end-of-step updates stores a
 // stale state).
 void writeCheckpoint(CoupledRun::State& s) {
+  const double start = MPI_Wtime();
   const CheckpointDraft draft = beginCheckpoint(s.output.string(), s.loop.step, MPI_COMM_WORLD);
   s.dem->writeRestart(draft.partial.dem);
   cfd::writeGasCheckpoint(*s.gas, draft.partial.gas, draft.id);
@@ -323,6 +325,16 @@ void writeCheckpoint(CoupledRun::State& s) {
   s.last_checkpoint = draft.final.folder;
   if (s.rank == 0) std::printf("parcelflow: checkpoint %s at t = %.6g s in %s\n", draft.id.c_str(), s.loop.time,
                                draft.final.folder.c_str());
+  // A checkpoint slower than mpirun's grace after a signal would be cut off by its SIGKILL (measured: a
+  // 67,500-parcel checkpoint lost that way). Said once, as soon as it is known.
+  const double seconds = MPI_Wtime() - start, grace = mpirunKillDelay();
+  if (s.rank == 0 && grace >= 0.0 && seconds > grace && !s.warned_slow_checkpoint)
+    std::printf("parcelflow: warning: this checkpoint took %.3g s, but Open MPI's mpirun kills the ranks %g s after "
+                "it forwards a signal (odls_base_sigkill_timeout): a SIGTERM or Ctrl-C to mpirun would lose the "
+                "checkpoint of that stop. Send the signal to the parcelflow processes instead (pkill -TERM -x "
+                "parcelflow), or start with mpirun --mca odls_base_sigkill_timeout %.0f\n",
+                seconds, grace, std::ceil(10.0 * seconds + 10.0));
+  s.warned_slow_checkpoint = s.warned_slow_checkpoint || seconds > grace;
 }
 
 void restoreCheckpoint(CoupledRun::State& s, const Checkpoint& checkpoint) {

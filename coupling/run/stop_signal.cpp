@@ -1,6 +1,7 @@
 #include "stop_signal.h"
 
 #include <csignal>
+#include <cstdlib>
 
 namespace parcelflow::coupling {
 
@@ -25,6 +26,12 @@ int stopRequested(MPI_Comm comm) {
   int local = received, any = 0;
   MPI_Allreduce(&local, &any, 1, MPI_INT, MPI_MAX, comm);
   return any;
+}
+
+double mpirunKillDelay() {
+  if (!std::getenv("OMPI_COMM_WORLD_SIZE")) return -1.0;
+  const char* setting = std::getenv("OMPI_MCA_odls_base_sigkill_timeout");
+  return setting ? std::atof(setting) : 1.0;
 }
 
 }  // namespace parcelflow::coupling

@@ -11,4 +11,9 @@ void installStopSignalHandlers();
 // The signal any rank got (0: none). Collective: one all-reduce of one int.
 int stopRequested(MPI_Comm comm);
 
+// Seconds Open MPI's mpirun waits after forwarding a signal before it kills the ranks
+// (odls_base_sigkill_timeout, default 1 s; its MCA settings reach the ranks as OMPI_MCA_* variables); a
+// negative value when the ranks were not started by Open MPI's mpirun.
+double mpirunKillDelay();
+
 }  // namespace parcelflow::coupling

@@ -20,6 +20,8 @@
                   parcels' volume (deposition conserves it: 1e-12), and B's averages equal A's after the restart.
   signal R:       SIGTERM to mpirun (and, with 2 ranks, to one rank only) stops the run within a coupling step
                   with a checkpoint, exit code 143 and the command to continue; continuing it appends rows.
+                  A checkpoint that takes longer than mpirun's grace after a signal (odls_base_sigkill_timeout,
+                  0 s here) is warned about once; with a grace of 30 s it is not.
 """
 import glob
 import os
@@ -224,6 +226,24 @@ def stop_with_signal(parcelflow, launcher, work, to_one_rank):
         fail(f"a file was written into the case folder: {leftover}")
 
 
+def slow_checkpoint_warning(parcelflow, launcher, work):
+    case = copy_case(os.path.join(CASES, "fluidized_column"), os.path.join(work, "grace"), edit)
+    warning = "a SIGTERM or Ctrl-C to mpirun would lose the checkpoint"
+    os.environ["OMPI_MCA_odls_base_sigkill_timeout"] = "30"
+    try:
+        quick = run(launcher + [parcelflow, "run", case, "--output", os.path.join(work, "grace", "a"),
+                                "--end", str(N * GAS_STEP)])
+        os.environ["OMPI_MCA_odls_base_sigkill_timeout"] = "0"
+        slow = run(launcher + [parcelflow, "run", case, "--output", os.path.join(work, "grace", "b"),
+                               "--end", str(2 * N * GAS_STEP)])
+    finally:
+        del os.environ["OMPI_MCA_odls_base_sigkill_timeout"]
+    if warning in quick or slow.count(warning) != 1:
+        fail(f"slow-checkpoint warning: {quick.count(warning)} times with a grace of 30 s (expected 0), "
+             f"{slow.count(warning)} times with 0 s and two checkpoints (expected 1)")
+    print("[measured] " + [l for l in slow.splitlines() if warning in l][0])
+
+
 def main():
     parcelflow, mpiexec, mode = sys.argv[1], sys.argv[2], sys.argv[3]
     ranks = int(sys.argv[4])
@@ -237,6 +257,7 @@ def main():
             refusals(parcelflow, launcher, work, case, b_out)
         else:
             stop_with_signal(parcelflow, launcher, work, to_one_rank=False)
+            slow_checkpoint_warning(parcelflow, launcher, work)
             if ranks == 2:
                 shutil.rmtree(os.path.join(work, "signal"))
                 stop_with_signal(parcelflow, launcher, work, to_one_rank=True)
