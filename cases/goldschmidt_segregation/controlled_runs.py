@@ -35,6 +35,7 @@ VARIANTS = {
     "no_wall_friction": ("bead-wall friction 0 instead of 0.09", {}, {"wall_friction": "0.0"}),
     "gidaspow": ("Gidaspow drag instead of Wen-Yu", {"coupling.drag": "Gidaspow"}, {}),
     "beetstra": ("Beetstra (BVK) drag instead of Wen-Yu", {"coupling.drag": "BeetstraVanDerHoefKuipers"}, {}),
+    "cells_z_188": ("188 gas cells over the height (3.7 mm) instead of 94 (7.4 mm)", {"mesh.cells": [47, 5, 188]}, {}),
     "centroid": ("centroid kernel instead of Gaussian", {"coupling.kernel": {"type": "centroid"}}, {}),
     "kernel_wide": ("Gaussian sharpness 0.5 (wider)",
                     {"coupling.kernel": {"type": "gaussian", "sharpness": 0.5, "radius": 2}}, {}),
@@ -107,7 +108,7 @@ def summarize(name, args):
     return {
         "variant": name, "change": VARIANTS[name][0],
         "layer_share": measure["layer_share"], "bubbles": measure["bubbles_per_snapshot"],
-        "bubble_width_mm": 1000 * measure["mean_bubble_width"],
+        "bubble_width_mm": 1000 * measure["mean_bubble_width"], "lateral_spread": measure["lateral_spread"],
         "segregation": (small.mean() - large.mean()) / h,
         "dp_over_weight": col("bed_pressure_drop").mean() / col("bed_weight_per_area").mean(),
         "dp_rms_over_weight": col("bed_pressure_drop").std() / col("bed_weight_per_area").mean(),

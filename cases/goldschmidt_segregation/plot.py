@@ -91,5 +91,5 @@ for name, h in (("small", small), ("large", large)):
 voids = void_shape.run_measure(void_shape.read_run(folder, t[window][0]))
 print(f"voids over {voids['snapshots']} field snapshots of the same window (void_shape.py): a bed-wide gas layer in "
       f"{100 * voids['layer_share']:.0f} %, {voids['bubbles_per_snapshot']:.2f} bubbles per snapshot, mean bubble width "
-      f"{1000 * voids['mean_bubble_width']:.1f} mm")
+      f"{1000 * voids['mean_bubble_width']:.1f} mm, lateral spread of the gas fraction {voids['lateral_spread']:.3f}")
 print(f"plot written: {heights_png}")

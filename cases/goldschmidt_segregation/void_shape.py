@@ -8,7 +8,9 @@ A field snapshot is reduced to the depth-averaged gas fraction a(x, z) on the me
 - A void is a layer when the columns it covers span more than LAYER_SPAN of the bed width; otherwise it
   is a bubble, whose width is the number of columns it covers times the cell width.
 A snapshot "has a layer" when any void is a layer. The measure of a run is the share of snapshots with a
-layer, the mean number of bubbles per snapshot and their mean width.
+layer, the mean number of bubbles per snapshot and their mean width, and the lateral spread: the standard
+deviation of a across the width, averaged over the rows inside the bed (row-mean solids fraction above
+SURFACE_SOLIDS) and the snapshots (a bed of flat bands has little, one with bubbles much).
 VOID_GAS is 0.7, not the 0.8 of a bubble's core: the kernel spreads each bead over cells 7.4 mm tall, and the
 gas layers under the lifted bed in the shipped run reach 0.6-0.8 (bed 0.35-0.45, freeboard 1).
 """
@@ -84,19 +86,27 @@ def snapshot_measure(a, dx):
     return has_layer, len(widths), widths
 
 
+def lateral_spread(a):
+    """Standard deviation of a[z, x] across the width, averaged over the rows inside the bed (0 without any)."""
+    rows = (1.0 - a).mean(axis=1) > SURFACE_SOLIDS
+    return float(a[rows].std(axis=1).mean()) if rows.any() else 0.0
+
+
 def run_measure(snapshots):
     """Summary over snapshots [(a, dx), ...]: layer share, mean bubbles per snapshot, mean bubble width [m]
-    (nan without bubbles)."""
-    layers, counts, widths = 0, [], []
+    (nan without bubbles), mean lateral spread."""
+    layers, counts, widths, spreads = 0, [], [], []
     for a, dx in snapshots:
         has_layer, count, w = snapshot_measure(a, dx)
         layers += has_layer
         counts.append(count)
         widths += w
+        spreads.append(lateral_spread(a))
     n = max(len(snapshots), 1)
     return {"snapshots": len(snapshots), "layer_share": layers / n,
             "bubbles_per_snapshot": float(np.mean(counts)) if counts else 0.0,
-            "mean_bubble_width": float(np.mean(widths)) if widths else float("nan")}
+            "mean_bubble_width": float(np.mean(widths)) if widths else float("nan"),
+            "lateral_spread": float(np.mean(spreads)) if spreads else 0.0}
 
 
 def read_run(folder, start=0.0):

@@ -71,6 +71,16 @@ class VoidShape(unittest.TestCase):
         self.assertAlmostEqual(m["layer_share"], 0.25)
         self.assertAlmostEqual(m["bubbles_per_snapshot"], 0.25)
         self.assertAlmostEqual(m["mean_bubble_width"], 5 * DX)
+        self.assertAlmostEqual(m["lateral_spread"], void_shape.lateral_spread(bubbly) / 4)
+
+    def test_lateral_spread_is_zero_for_flat_bands_and_known_for_a_half_void_row(self):
+        a = bed()
+        a[12:14, :] = 0.9  # a flat band: each row uniform across the width
+        self.assertAlmostEqual(void_shape.lateral_spread(a), 0.0, places=14)
+        b = np.ones((NZ, 4))
+        b[:2, :] = 0.4
+        b[0, :2] = 0.6  # row 0: 0.6 0.6 0.4 0.4, std 0.1; row 1 uniform; the rest freeboard
+        self.assertAlmostEqual(void_shape.lateral_spread(b), 0.05)
 
     def test_depth_average_of_cells_in_any_order(self):
         rng = np.random.default_rng(1)
