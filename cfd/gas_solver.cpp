@@ -71,13 +71,13 @@ void GasSolver::setupBoundaries() {
   if (!haveOutlet)
     throw ConfigError("case.yaml: boundaries: at least one patch must be a pressure_outlet "
                       "(it fixes the pressure level and lets the gas leave)");
+  int tangentialPlate = -1;  // a distributor patch whose velocity is not normal to one of its faces here
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     const auto& pc = patch_[m.boundaryPatch(b)];
     if (pc.resistance > 0.0) {
       const Vec3 n = m.boundaryArea(b) / m.boundaryMagArea(b);
       if ((pc.superficialVelocity - pc.superficialVelocity.dot(n) * n).norm() > 1e-12 * pc.superficialVelocity.norm())
-        throw ConfigError("case.yaml: boundaries." + m.patchNames()[m.boundaryPatch(b)] +
-                          ".superficial_velocity: a distributor plate needs a velocity normal to its faces");
+        tangentialPlate = std::max(tangentialPlate, m.boundaryPatch(b));
       // The start value; from then on the pressure correction sets these fluxes.
       phiB_[b] = rampFactor(pc.rampTime, 0.0) * pc.superficialVelocity.dot(m.boundaryArea(b));
     }
@@ -86,6 +86,11 @@ void GasSolver::setupBoundaries() {
       PARCELFLOW_ASSERT(n.maxCoeff() == 1.0, "free-slip walls need axis-aligned faces");
     }
   }
+  // Only the ranks with faces of the patch can see it: agreed on by all, so that all stop alike.
+  MPI_Allreduce(MPI_IN_PLACE, &tangentialPlate, 1, MPI_INT, MPI_MAX, m.comm());
+  if (tangentialPlate >= 0)
+    throw ConfigError("case.yaml: boundaries." + m.patchNames()[tangentialPlate] +
+                      ".superficial_velocity: a distributor plate needs a velocity normal to its faces");
 }
 
 void GasSolver::setupInletRegions() {

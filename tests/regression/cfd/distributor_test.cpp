@@ -12,7 +12,9 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <string>
 
+#include "cfd/config_error.hpp"
 #include "gas_case.hpp"
 
 using namespace parcelflow::cfd;
@@ -97,4 +99,19 @@ TEST(Distributor, TheSplitFollowsThePlateResistance) {
   EXPECT_LT(soft, 0.45);  // the bed's 200 Pa against a 1 Pa plate: most gas goes around
   EXPECT_NEAR(stiff, 0.5, 1e-3);
   EXPECT_NEAR(uniformBed, 0.5, 1e-10);
+}
+
+// A plate velocity with a component along the plate is refused on every rank alike (only the ranks that own
+// faces of the plate can see it), naming the key.
+TEST(Distributor, ATangentialPlateVelocityIsRefusedOnEveryRank) {
+  GasSettings s = column(50.0);
+  for (auto& bc : s.boundaries)
+    if (bc.patch == "zmin") bc.superficialVelocity = Vec3(0.05, 0, kU);
+  std::string message;
+  try {
+    GasSolver gas(s, MPI_COMM_WORLD);
+  } catch (const ConfigError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("boundaries.zmin.superficial_velocity"), std::string::npos) << message;
 }
