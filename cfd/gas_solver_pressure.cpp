@@ -70,7 +70,10 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
   }
   ScalarField phiHbyAB(m.nBoundaryFaces(), 0.0), coeffB(m.nBoundaryFaces(), 0.0);
   ScalarField pB = boundaryPressure();
-  ScalarField rhs(nOwned, 0.0), plateCoeff;  // plateCoeff: distributor faces' A/R summed per cell
+  // Every rank knows all patches, so all take the distributor branches together (they are collective).
+  const bool plates =
+      std::any_of(patch_.begin(), patch_.end(), [](const PatchCondition& pc) { return pc.resistance > 0.0; });
+  ScalarField rhs(nOwned, 0.0), plateCoeff(plates ? nOwned : 0, 0.0);  // distributor faces' A/R per cell
   double plateInflow = 0.0;
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     const int c = m.boundaryCell(b);
@@ -79,7 +82,6 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
     if (type == BoundaryType::VelocityInlet && pc.resistance > 0.0) {
       // Distributor plate: superficial velocity (P - p) / R into the cell, P the plenum pressure: like an
       // outlet at the pressure P, which addPlenumPressure finds.
-      if (plateCoeff.empty()) plateCoeff.assign(nOwned, 0.0);
       coeffB[b] = m.boundaryMagArea(b) / pc.resistance;
       if (firstCorrector) pEqn_->diag()[c] += coeffB[b];
       plateCoeff[c] += coeffB[b];
@@ -111,8 +113,7 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
   if (firstCorrector) pPrecond_.recordIterations(stats.iterations);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
-  // Every rank knows all patches, so all take this branch together (it is collective).
-  if (std::any_of(patch_.begin(), patch_.end(), [](const PatchCondition& pc) { return pc.resistance > 0.0; })) {
+  if (plates) {
     const double plenum = addPlenumPressure(plateCoeff, m.sum(plateInflow));
     for (int b = 0; b < m.nBoundaryFaces(); ++b)
       if (patch_[m.boundaryPatch(b)].resistance > 0.0) pB[b] = plenum;
@@ -136,17 +137,14 @@ double GasSolver::addPlenumPressure(const ScalarField& plateCoeff, double inflow
   const Mesh& m = *mesh_;
   const int nOwned = m.nOwnedCells();
   ScalarField response(m.nLocalCells(), 0.0);
-  ScalarField rhs(nOwned, 0.0);
-  if (!plateCoeff.empty()) rhs = plateCoeff;
-  const SolveStats stats = pSolver_->pcg(response, rhs);
+  const SolveStats stats = pSolver_->pcg(response, plateCoeff);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
   double num = 0.0, den = 0.0;
-  if (!plateCoeff.empty())
-    for (int c = 0; c < nOwned; ++c) {
-      num += plateCoeff[c] * pRgh_[c];
-      den += plateCoeff[c] * (1.0 - response[c]);
-    }
+  for (int c = 0; c < nOwned; ++c) {
+    num += plateCoeff[c] * pRgh_[c];
+    den += plateCoeff[c] * (1.0 - response[c]);
+  }
   const double plenum = (inflow + m.sum(num)) / m.sum(den);
   for (int c = 0; c < m.nLocalCells(); ++c) pRgh_[c] += plenum * response[c];
   return plenum;
