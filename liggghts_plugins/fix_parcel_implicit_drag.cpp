@@ -1,6 +1,7 @@
 #include "fix_parcel_implicit_drag.h"
 
 #include "atom.h"
+#include "contact_time.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -33,6 +34,10 @@ void FixParcelImplicitDrag::init()
   if (!atom->sphere_flag || !atom->rmass_flag)
     error->all(FLERR, "fix parcel/implicit_drag needs spheres with per-atom mass (atom_style granular)");
   reset_dt();
+  // before every run, the script's filling and settling included: a step near the contact time loses atoms
+  const ContactTime contact = shortest_contact_time(lmp);
+  if (dem_step_too_long(contact, update->dt))
+    throw DemStepTooLong(contact, update->dt, static_cast<long>(update->ntimestep));
 }
 
 void FixParcelImplicitDrag::reset_dt()

@@ -216,7 +216,9 @@ void FixParcelReinject::place(std::vector<double> queue)
     for (std::size_t k = 0; k < n; ++k) {
       const double* r = &queue[k * record_size_];
       Point x;
-      if (!placer.place(r[RADIUS], settings_.attempts, x)) {
+      const bool placed = settings_.lowest ? placer.place_lowest(r[RADIUS], settings_.attempts, x)
+                                           : placer.place(r[RADIUS], settings_.attempts, x);
+      if (!placed) {
         pending_.insert(pending_.end(), r, r + record_size_);
         continue;
       }

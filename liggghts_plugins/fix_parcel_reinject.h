@@ -1,10 +1,13 @@
 // fix ID group parcel/reinject outlet REGION_ID return REGION_ID velocity vx vy vz [every N] [seed S] [attempts K]
+//     [placement random|lowest]
 //
 // Outlet reinjection (the paper's cyclone emulation, DESIGN section 5). On every step that is a multiple of N
 // the parcels of the group whose centre lies in the outlet region are taken out and put back into the return
 // region with the same ID, type, groups, radius, mass, density and the columns of every parcelflow per-atom
 // fix (fix parcel's dp and np among them), velocity (vx, vy, vz) and no rotation, at a random position where
-// the sphere lies inside the return region and overlaps no other atom (periodic images included). A parcel
+// the sphere lies inside the return region and overlaps no other atom (periodic images included): the first
+// such of K random candidates, or with `placement lowest` the lowest of them (a tall return region then
+// fills from the bottom, where a dense bed leaves room, as solids leave a dipleg). A parcel
 // without such a position after K candidates stays pending in this fix (out of the simulation, so it
 // cannot interact) and is tried again first at the next reinjection step; no parcel is dropped.
 //

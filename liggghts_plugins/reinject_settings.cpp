@@ -11,7 +11,7 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what) { throw ArgumentError("fix parcel/reinject: " + what); }
 
-const std::string kKeywords = "outlet, return, velocity, every, seed, attempts";
+const std::string kKeywords = "outlet, return, velocity, every, seed, attempts, placement";
 
 // a whole number in [lo, hi] or an error naming the keyword and what is allowed
 double whole_number(const std::string& key, const std::string& token, double lo, double hi, const std::string& allowed)
@@ -54,6 +54,11 @@ ReinjectSettings parse_reinject_settings(const std::vector<std::string>& args)
       i += 2;
     } else if (key == "attempts") {
       s.attempts = static_cast<int>(whole_number(key, value(key, 1, "an integer >= 1"), 1, 1e9, "an integer >= 1"));
+      i += 2;
+    } else if (key == "placement") {
+      const std::string& v = value(key, 1, "random or lowest");
+      if (v != "random" && v != "lowest") fail("keyword 'placement' got '" + v + "'; allowed: random, lowest");
+      s.lowest = v == "lowest";
       i += 2;
     } else {
       fail("unknown keyword '" + key + "'; allowed keywords: " + kKeywords);

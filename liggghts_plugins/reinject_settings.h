@@ -16,6 +16,7 @@ struct ReinjectSettings {
   long every = 1;                     // reinject on steps that are multiples of `every`
   std::uint32_t seed = 12345679;      // random positions in the return region
   int attempts = 100;                 // candidate positions per parcel and reinjection step
+  bool lowest = false;                // placement lowest: the free candidate lowest in z, not the first
 };
 
 // Parses the arguments after the style name, e.g. {"outlet","top","return","bottom","velocity","0","0","1"}.

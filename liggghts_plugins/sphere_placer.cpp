@@ -65,19 +65,40 @@ bool SpherePlacer::overlaps(const Point& centre, double radius) const
   return false;
 }
 
+bool SpherePlacer::candidate(double radius, Point& p)
+{
+  // a sphere inside the region has its centre at least `radius` inside the box
+  for (int k = 0; k < 3; ++k) p[k] = lo_[k] + radius + unit(rng_) * (hi_[k] - lo_[k] - 2.0 * radius);
+  return inside_(p, radius) && !overlaps(p, radius);
+}
+
 bool SpherePlacer::place(double radius, int attempts, Point& centre)
 {
   for (int k = 0; k < 3; ++k)
     if (hi_[k] - lo_[k] < 2.0 * radius) return false;
   for (int a = 0; a < attempts; ++a) {
-    Point p;  // a sphere inside the region has its centre at least `radius` inside the box
-    for (int k = 0; k < 3; ++k) p[k] = lo_[k] + radius + unit(rng_) * (hi_[k] - lo_[k] - 2.0 * radius);
-    if (!inside_(p, radius) || overlaps(p, radius)) continue;
+    Point p;
+    if (!candidate(radius, p)) continue;
     centre = p;
     add(p, radius);
     return true;
   }
   return false;
+}
+
+bool SpherePlacer::place_lowest(double radius, int attempts, Point& centre)
+{
+  for (int k = 0; k < 3; ++k)
+    if (hi_[k] - lo_[k] < 2.0 * radius) return false;
+  bool found = false;
+  for (int a = 0; a < attempts; ++a) {
+    Point p;
+    if (!candidate(radius, p) || (found && p[2] >= centre[2])) continue;
+    centre = p;
+    found = true;
+  }
+  if (found) add(centre, radius);
+  return found;
 }
 
 }  // namespace parcelflow::plugins

@@ -1,8 +1,9 @@
 // Random placement of spheres that must not overlap each other or a set of fixed spheres (plain C++, no
 // LIGGGHTS; used by fix parcel/reinject). Candidate centres are drawn uniformly from a box shrunk by the
-// radius; a candidate is taken when the region test accepts it and it is at least r_i + r_j from every
-// sphere added so far. The random numbers come from std::mt19937_64 seeded by (seed, stream), so a
-// placement is reproducible.
+// radius; a candidate is free when the region test accepts it and it is at least r_i + r_j from every
+// sphere added so far. `place` takes the first free candidate, `place_lowest` the free one with the
+// smallest z of all its candidates. The random numbers come from std::mt19937_64 seeded by (seed, stream),
+// so a placement is reproducible.
 #pragma once
 
 #include <array>
@@ -30,8 +31,11 @@ class SpherePlacer {
   bool overlaps(const Point& centre, double radius) const;
   // Up to `attempts` candidates; on success writes the centre, adds the sphere and returns true.
   bool place(double radius, int attempts, Point& centre);
+  // Draws all `attempts` candidates and takes the free one lowest in z (the same on success otherwise).
+  bool place_lowest(double radius, int attempts, Point& centre);
 
  private:
+  bool candidate(double radius, Point& p);  // draws one; whether it is free
   std::array<long, 3> cell_of(const Point& p) const;
   static std::uint64_t key(const std::array<long, 3>& c);
 

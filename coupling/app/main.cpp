@@ -13,6 +13,7 @@
 #include "cfd/internal_error.hpp"
 #include "blowup_guard.h"
 #include "command_line.h"
+#include "contact_time_check.h"
 #include "coupled_run.h"
 #include "liggghts_instance.h"
 #include "version.h"
@@ -26,7 +27,16 @@ int runDem(const pc::CommandLine& cl) {
   for (const auto& [name, value] : cl.vars) arguments.insert(arguments.end(), {"-var", name, value});
   if (!cl.log_file.empty()) arguments.insert(arguments.end(), {"-log", cl.log_file});
   pc::LiggghtsInstance dem(MPI_COMM_WORLD, arguments);
-  dem.runInputFile();
+  try {
+    dem.runInputFile();
+  } catch (const parcelflow::plugins::DemStepTooLong& e) {  // fix parcel/implicit_drag, on every rank
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    const auto error = pc::demStepError("timestep", e.estimate, e.dem_step,
+                                        "at the start of the run at step " + std::to_string(e.step));
+    if (rank == 0) std::cerr << "parcelflow: error in script '" << cl.script << "': " << error.what() << "\n";
+    return 2;
+  }
   return 0;
 }
 

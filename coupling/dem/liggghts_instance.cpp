@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "contact_time_check.h"
 #include "input.h"
 #include "lammps.h"
 #include "signal_handling.h"
@@ -57,9 +58,29 @@ LiggghtsInstance::~LiggghtsInstance() {
 
 void LiggghtsInstance::runInputFile() { lmp_->input->file(); }
 
-void LiggghtsInstance::runFile(const std::string& path) { lmp_->input->file(path.c_str()); }
+namespace {
 
-void LiggghtsInstance::command(const std::string& line) { lmp_->input->one(line.c_str()); }
+// fix parcel/implicit_drag's check at the start of a run, as the user error it is
+template <class Commands>
+void withDemStepCheck(Commands&& commands) {
+  try {
+    commands();
+  } catch (const plugins::DemStepTooLong& e) {
+    throw demStepError("time.dem_step", e.estimate, e.dem_step,
+                       "found at the start of a LIGGGHTS run at DEM step " + std::to_string(e.step) +
+                           " (before it moved any atom)");
+  }
+}
+
+}  // namespace
+
+void LiggghtsInstance::runFile(const std::string& path) {
+  withDemStepCheck([&] { lmp_->input->file(path.c_str()); });
+}
+
+void LiggghtsInstance::command(const std::string& line) {
+  withDemStepCheck([&] { lmp_->input->one(line.c_str()); });
+}
 
 void LiggghtsInstance::quietCommand(const std::string& line) {
   if (!lmp_->screen) return command(line);  // this rank prints nothing anyway

@@ -1,9 +1,14 @@
 """The DEM step against the contact time (coupling/dem/contact_time_check.h): parcelflow prints its estimate for
 the case's contact model and smallest parcel, which agrees with the formula computed here, and a DEM step
 above t_c/10 stops with exit code 2 naming time.dem_step, the estimate and the limit, for hooke/stiffness (the
-column's kn, scaled by `fix parcel ... scaling linear`) and for hertz (Young's modulus, Poisson ratio, 1 m/s)."""
+column's kn, scaled by `fix parcel ... scaling linear`) and for hertz (Young's modulus, Poisson ratio, 1 m/s).
+A DEM step of 0.55 t_c, with which LIGGGHTS lost atoms in the script's own settling before the check moved
+into fix parcel/implicit_drag's init, stops at the start of the settling run, in `parcelflow run` (naming
+time.dem_step) and in `parcelflow dem` (naming the script's timestep), with no "Lost atoms"."""
 import math
+import os
 import re
+import subprocess
 
 from reliability_runs import GAS_STEP, expect, fail, main
 
@@ -51,6 +56,28 @@ def check_model(runs, name, script, expected):
            "t_c/10", "DEM steps per contact")
 
 
+def stops_before_settling(runs):
+    """The settling run of column.in starts at DEM step 1 (after `run 1` inserted the parcels)."""
+    step = 4e-4  # = 0.55 t_c; also the gas step, so that the case is otherwise valid
+    case = runs.case(lambda s: s["time"].update(dem_step=step, gas_step=step))
+    text = expect(f"run: DEM step {step:g} s", runs.run(case, end=10 * step), 2, "time.dem_step",
+                  "found at the start of a LIGGGHTS run at DEM step 1", "t_c/10")
+    if "Lost atoms" in text:
+        fail(f"run: LIGGGHTS lost atoms before the check\n{text[-2000:]}")
+    # the same script under `parcelflow dem`, with the variables parcelflow passes to it
+    variables = {"dem_step": repr(step), "restarting": "0", "restart_file": "none", "np": "8", "radius": "0.001",
+                 "nparcels": str(300), "skin": "0.0004"}
+    command = runs.launcher + [os.path.abspath(runs.parcelflow), "dem", "column.in", "-log", "none"]
+    for name, value in variables.items():
+        command += ["-var", name, value]
+    done = subprocess.run(command, cwd=case, capture_output=True, text=True, errors="replace", timeout=300)
+    text = expect(f"dem: timestep {step:g} s", (done.returncode, done.stdout + done.stderr, None), 2,
+                  "error in script 'column.in': timestep", "at the start of the run at step 1", "t_c/10")
+    if "Lost atoms" in text:
+        fail(f"dem: LIGGGHTS lost atoms before the check\n{text[-2000:]}")
+
+
 if __name__ == "__main__":
     main([lambda runs: check_model(runs, "hooke/stiffness", lambda t: t, hooke_contact_time()),
-          lambda runs: check_model(runs, "hertz", hertz, hertz_contact_time())])
+          lambda runs: check_model(runs, "hertz", hertz, hertz_contact_time()),
+          stops_before_settling])

@@ -167,8 +167,11 @@ TEST(ReinjectSettings, AcceptedFormsAndDefaults)
   EXPECT_EQ(s.every, 1);
   EXPECT_EQ(s.seed, 12345679u);
   EXPECT_EQ(s.attempts, 100);
-  const ReinjectSettings t =
-      parse_reinject_settings(split("attempts 7 seed 4294967295 every 25 velocity 1 2 3 return b outlet a"));
+  EXPECT_FALSE(s.lowest);
+  const ReinjectSettings t = parse_reinject_settings(
+      split("attempts 7 seed 4294967295 every 25 velocity 1 2 3 placement lowest return b outlet a"));
+  EXPECT_TRUE(t.lowest);
+  EXPECT_FALSE(parse_reinject_settings(split("outlet a return b velocity 0 0 0 placement random")).lowest);
   EXPECT_EQ(t.every, 25);
   EXPECT_EQ(t.seed, 4294967295u);
   EXPECT_EQ(t.attempts, 7);
@@ -190,6 +193,9 @@ TEST(ReinjectSettings, Errors)
   expect_reinject_error(base + "seed 0", {"'seed' got '0'", "1 to 4294967295"});
   expect_reinject_error(base + "attempts x", {"'attempts' got 'x'", "an integer >= 1"});
   expect_reinject_error(base + "every 2 every 3", {"'every' given twice"});
-  expect_reinject_error(base + "colour red", {"unknown keyword 'colour'", "outlet, return, velocity, every, seed, attempts"});
+  expect_reinject_error(base + "placement top", {"'placement' got 'top'", "random, lowest"});
+  expect_reinject_error(base + "placement", {"'placement' needs random or lowest"});
+  expect_reinject_error(base + "colour red",
+                        {"unknown keyword 'colour'", "outlet, return, velocity, every, seed, attempts, placement"});
   expect_reinject_error("outlet same return same velocity 0 0 1", {"'outlet' and 'return' both got 'same'", "two different"});
 }
