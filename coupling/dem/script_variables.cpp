@@ -1,6 +1,7 @@
 #include "script_variables.h"
 
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -10,14 +11,32 @@ namespace parcelflow::coupling {
 
 namespace {
 
-struct Reference {
-  std::string name, file;
+struct Place {
+  std::string file;
   int line = 0;
+  long order = 0;  // position in the order LIGGGHTS reads the lines, includes expanded where they stand
+};
+
+struct Reference {
+  std::string name;
+  Place place;
+  bool conditional = false;  // inside the quoted commands of an `if`: substituted only if that branch runs
+};
+
+struct Scan {
+  std::map<std::string, Place> first_definition;
+  std::vector<Reference> used;
+  std::map<std::pair<std::string, std::string>, long> labels;  // (file, label) -> order
+  std::vector<std::pair<std::pair<std::string, std::string>, long>> jumps;
+  long order = 0;
 };
 
 const std::regex kDefinition(R"((?:^|[\s"'])variable\s+([A-Za-z0-9_]+))");
 const std::regex kReference(R"(\$\{([A-Za-z0-9_]+)\}|\$([A-Za-z0-9_]))");
 const std::regex kInclude(R"(^\s*include\s+(\S+)\s*$)");
+const std::regex kLabel(R"(^\s*label\s+(\S+))");
+const std::regex kJump(R"(^\s*jump\s+(\S+)(?:\s+(\S+))?)");
+const std::regex kIf(R"(^\s*if\s)");
 
 // A line without its comment (LIGGGHTS: '#' outside quotes starts one).
 std::string withoutComment(const std::string& line) {
@@ -34,8 +53,18 @@ std::string withoutComment(const std::string& line) {
   return line;
 }
 
-void scan(const std::string& folder, const std::string& file, int depth, std::set<std::string>& defined,
-          std::vector<Reference>& used) {
+// whether position `at` of `line` lies between quotes
+bool quoted(const std::string& line, std::size_t at) {
+  char quote = 0;
+  for (std::size_t i = 0; i < at; ++i)
+    if (quote ? line[i] == quote : (line[i] == '"' || line[i] == '\'')) quote = quote ? 0 : line[i];
+  return quote != 0;
+}
+
+void scanLine(const std::string& folder, const std::string& file, const std::string& line, int number, int depth,
+              Scan& s);
+
+void scanFile(const std::string& folder, const std::string& file, int depth, Scan& s) {
   std::ifstream in(folder + "/" + file);
   if (!in || depth > 8) return;  // LIGGGHTS reports a missing include itself
   std::string raw, line;
@@ -49,29 +78,56 @@ void scan(const std::string& folder, const std::string& file, int depth, std::se
       line.erase(last);
       continue;
     }
-    for (std::sregex_iterator m(line.begin(), line.end(), kDefinition), end; m != end; ++m) defined.insert((*m)[1]);
-    for (std::sregex_iterator m(line.begin(), line.end(), kReference), end; m != end; ++m)
-      used.push_back({(*m)[1].matched ? (*m)[1].str() : (*m)[2].str(), file, first});
-    std::smatch include;
-    if (std::regex_match(line, include, kInclude) && include[1].str().find('$') == std::string::npos)
-      scan(folder, include[1], depth + 1, defined, used);
+    scanLine(folder, file, line, first, depth, s);
     line.clear();
   }
 }
+
+void scanLine(const std::string& folder, const std::string& file, const std::string& line, int number, int depth,
+              Scan& s) {
+  const Place here{file, number, ++s.order};
+  const bool branch = std::regex_search(line, kIf);
+  for (std::sregex_iterator m(line.begin(), line.end(), kReference), end; m != end; ++m)
+    s.used.push_back({(*m)[1].matched ? (*m)[1].str() : (*m)[2].str(), here,
+                      branch && quoted(line, static_cast<std::size_t>(m->position()))});
+  for (std::sregex_iterator m(line.begin(), line.end(), kDefinition), end; m != end; ++m)
+    s.first_definition.emplace((*m)[1], here);
+  std::smatch match;
+  if (std::regex_search(line, match, kLabel)) s.labels[{file, match[1]}] = here.order;
+  if (std::regex_search(line, match, kJump) && match[2].matched)
+    s.jumps.push_back({{match[1] == "SELF" ? file : match[1].str(), match[2]}, here.order});
+  if (std::regex_match(line, match, kInclude) && match[1].str().find('$') == std::string::npos)
+    scanFile(folder, match[1], depth + 1, s);
+}
+
+std::string where(const Place& p) { return p.file + " line " + std::to_string(p.line); }
 
 }  // namespace
 
 void checkScriptVariables(const std::string& folder, const std::string& script,
                           const std::vector<std::string>& passed) {
-  std::set<std::string> defined(passed.begin(), passed.end());
-  std::vector<Reference> used;
-  scan(folder, script, 0, defined, used);
-  for (const Reference& r : used)
-    if (!defined.count(r.name))
-      throw cfd::ConfigError("liggghts.script: " + r.file + " line " + std::to_string(r.line) + " uses the variable " +
-                             r.name + ", which neither a `variable " + r.name +
+  Scan s;
+  scanFile(folder, script, 0, s);
+  const std::set<std::string> outside(passed.begin(), passed.end());
+  // A jump back to an earlier label may run a definition before a use that precedes it in the file.
+  bool backward_jump = false;
+  for (const auto& [label, order] : s.jumps) {
+    const auto target = s.labels.find(label);
+    backward_jump = backward_jump || (target != s.labels.end() && target->second < order);
+  }
+  for (const Reference& r : s.used) {
+    if (outside.count(r.name)) continue;
+    const auto definition = s.first_definition.find(r.name);
+    if (definition == s.first_definition.end())
+      throw cfd::ConfigError("liggghts.script: " + where(r.place) + " uses the variable " + r.name +
+                             ", which neither a `variable " + r.name +
                              " ...` command of the script nor liggghts.variables defines (parcelflow itself passes "
                              "dem_step, restarting and restart_file)");
+    if (!backward_jump && !r.conditional && definition->second.order > r.place.order)
+      throw cfd::ConfigError("liggghts.script: " + where(r.place) + " uses the variable " + r.name +
+                             " before its definition in " + where(definition->second) +
+                             " (LIGGGHTS reads the script in order; define it earlier or in liggghts.variables)");
+  }
 }
 
 }  // namespace parcelflow::coupling

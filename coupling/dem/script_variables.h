@@ -1,7 +1,10 @@
 // LIGGGHTS stops on an undefined variable without naming it. Before it starts, this scans the case's
 // script, and the files it `include`s by a plain name, for ${name} and $x references and checks that each
 // name is defined by a `variable` command somewhere in those files (also inside an `if`'s quoted
-// commands) or passed from outside (liggghts.variables and parcelflow's own).
+// commands) or passed from outside (liggghts.variables and parcelflow's own), and that a reference outside an
+// `if`'s quoted commands does not come before the first definition in the order LIGGGHTS reads the lines
+// (includes expanded where they stand; not checked when a `jump` goes back to an earlier label, since a
+// loop may define a variable on its first pass). Branches and forward jumps are not followed.
 #pragma once
 
 #include <string>

@@ -41,6 +41,25 @@ def undefined_script_variable(runs):
     expect("undefined ${no_such_value}", runs.run(case), 2, "no_such_value", f"column.in line {line}")
 
 
+def variable_used_before_its_definition(runs):
+    """LIGGGHTS reads in order: a use above the definition aborts with "Substitution for illegal variable"
+    (no name). Inside an `if`'s quoted branch, or in a script that jumps back to a label, it may be valid."""
+    def early(text):
+        return text.replace("neigh_modify    delay 0",
+                            "neigh_modify    delay 0\nprint           \"later ${later}\"") + "variable later equal 3\n"
+    case = runs.case(script=early)
+    lines = [n for n, l in enumerate(open(os.path.join(case, "column.in")), 1) if "later" in l]
+    expect("${later} above its definition", runs.run(case), 2, "uses the variable later before its definition",
+           f"column.in line {lines[0]}", f"column.in line {lines[-1]}")
+
+    def in_branch(text):
+        return text.replace("neigh_modify    delay 0",
+                            "neigh_modify    delay 0\nif \"0 > 1\" then \"print 'later ${later}'\"") + \
+            "variable later equal 3\n"
+    expect("${later} above its definition in an if branch that does not run", runs.run(runs.case(script=in_branch)),
+           0, "done:")
+
+
 def infinite_parcel_velocity(runs):
     case = runs.case(script=lambda text: text + "set atom 7 vx 1e400\n")
     expect("parcel 7 with an infinite velocity", runs.run(case), None, "parcel 7 has a non-finite velocity", "inf",
@@ -49,4 +68,4 @@ def infinite_parcel_velocity(runs):
 
 if __name__ == "__main__":
     main([unwritable_output, case_yaml_is_a_folder, end_below_one_gas_step, values_the_solver_cannot_honour,
-          undefined_script_variable, infinite_parcel_velocity])
+          undefined_script_variable, variable_used_before_its_definition, infinite_parcel_velocity])
