@@ -236,6 +236,15 @@ void FixParcelReinject::place(std::vector<double> queue)
     MPI_Allreduce(&created, &all_created, 1, MPI_LONG, MPI_SUM, world);
     if (all_created != static_cast<long>(placed_tags_.size()))
       error->all(FLERR, "fix parcel/reinject: internal error: a placed parcel has no owning rank");
+    // LIGGGHTS' atom map was sized at its last map_init: for the atoms then present (map_array up to their
+    // largest ID, which a pending parcel may exceed) plus 1000 spare entries of `sametag`, which the map_clear
+    // at the start of the coming exchange writes for every local atom. A burst of new atoms overran it
+    // (heap corruption, measured with 67,500 parcels), so re-size it as fix insert does after inserting.
+    if (all_created > 0 && atom->map_style) {
+      atom->nghost = 0;
+      atom->map_init();
+      atom->map_set();
+    }
   }
   counters_[TOTAL_IN_N] += counters_[IN_N];
   counters_[TOTAL_IN_MASS] += counters_[IN_MASS];

@@ -116,7 +116,8 @@ void CoupledRun::initialize() {
   s.settings = restartRelevantSettings(s.options.case_folder + "/case.yaml");
   std::unique_ptr<Checkpoint> checkpoint;
   if (!s.options.restart.empty()) {
-    checkpoint = std::make_unique<Checkpoint>(readCheckpoint(s.options.restart));
+    // absolute: LIGGGHTS runs in the case folder, and the gas state is read after it started
+    checkpoint = std::make_unique<Checkpoint>(readCheckpoint(fs::absolute(s.options.restart).string()));
     checkSameSettings(*checkpoint, s.settings);
   }
   applyEndTime(s.case_def.settings.time, s.options.end_time, checkpoint ? checkpoint->loop.time : 0.0);

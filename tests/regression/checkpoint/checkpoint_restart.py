@@ -8,7 +8,8 @@
                   the LIGGGHTS restart with the forces the next step starts from), and the run that wrote
                   the checkpoint sets up LIGGGHTS and the pressure preconditioner again exactly as the
                   restarted run does. The tolerance below is 1e-12 relative, far below any physical change.
-  other_ranks:    B's checkpoint continued on 1 rank instead of 2. Only the pressure solve's partition differs
+  other_ranks:    B's checkpoint continued on 1 rank instead of 2 (case, output and checkpoint given as relative
+                  paths: a relative --restart once failed to open gas.h5 after LIGGGHTS entered the case folder). Only the pressure solve's partition differs
                   (block preconditioner of 1 vs 2 blocks, same tolerance 1e-8 relative): monitors agree to
                   1e-6 relative after N steps, set by that tolerance times the N steps' growth.
   refusals:       a case whose drag law differs and a checkpoint with gas.h5 of another checkpoint stop with
@@ -161,8 +162,10 @@ def same_ranks(parcelflow, launcher, work):
 def other_ranks(parcelflow, one_rank, work, case, a_out, b_out, checkpoint):
     c_out = os.path.join(work, "C")
     shutil.copytree(b_out, c_out)
-    run(one_rank + [parcelflow, "run", case, "--output", c_out, "--end", str(2 * N * GAS_STEP),
-         "--restart", checkpoint.replace(b_out, c_out)])
+    # relative folders, as a user types them (LIGGGHTS runs in the case folder; the paths still resolve)
+    relative = [os.path.relpath(p, work) for p in (case, c_out, checkpoint.replace(b_out, c_out))]
+    run(one_rank + [os.path.abspath(parcelflow), "run", relative[0], "--output", relative[1], "--end",
+                    str(2 * N * GAS_STEP), "--restart", relative[2]], cwd=work)
     # PCG's iteration counts depend on the partition by design; they are not compared.
     compare(a_out, c_out, 1e-6, "restart of a 2-rank checkpoint on 1 rank",
             ignore=("pressure_iterations", "pressure_iterations_total"))

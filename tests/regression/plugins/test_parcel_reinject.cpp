@@ -4,7 +4,8 @@
 // mass, cumulative out - in = pending. After every reinjection step: the parcels put back lie inside the
 // return region and overlap no other parcel (periodic images included). At the end: the same IDs (atoms +
 // pending), each with its own dp/np (fix parcel) and u_f (fix parcel/implicit_drag). Also: parcels pending
-// in a crowded return region across write_restart / read_restart in a new instance, and the warning line.
+// in a crowded return region across write_restart / read_restart in a new instance, and the warning line;
+// and a burst of 2,400 parcels put back in one step (more than LIGGGHTS' 1000 spare atom-map entries).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -267,4 +268,36 @@ TEST(FixParcelReinject, PendingParcelsSurviveRestart)
     b.check_ids(s);
   }
   remove_scratch_dir(dir);
+}
+
+// All 2,400 parcels leave in one step and are created again at once: LIGGGHTS' atom map (sized for the
+// atoms of its last map_init plus 1000) must be re-sized, or the exchange's map_clear overruns it (heap
+// corruption: "free(): invalid next size" in Atom::map_set, seen with the 67,500-parcel FCC bed).
+TEST(FixParcelReinject, BurstLargerThanTheAtomMapsSpareRoom)
+{
+  constexpr long kBurst = 2400;
+  Session s("none");
+  s.cmd("variable N equal " + std::to_string(kBurst));
+  s.file(kDir + "/reinject_burst.in");
+  s.cmd("run 1");  // inserts the parcels
+  ASSERT_EQ(static_cast<long>(s.lmp()->atom->natoms), kBurst);
+  s.cmd("run 19 pre no post no");  // the reinjection step 10, and steps after it that rebuild the map again
+  auto* re = s.fix<FixParcelReinject>("re");
+  LAMMPS_NS::Atom* atom = s.lmp()->atom;
+  long upper = 0, unmapped = 0;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    upper += atom->x[i][2] > 0.1;
+    const int j = atom->map(atom->tag[i]);
+    unmapped += j < 0 || atom->tag[j] != atom->tag[i];
+  }
+  upper = static_cast<long>(sum_all(static_cast<double>(upper)));
+  unmapped = static_cast<long>(sum_all(static_cast<double>(unmapped)));
+  PF_PRINT("[ reinject ] burst, %d ranks: %.0f out and %.0f in at once, %.0f atoms (%ld in the upper half), %.0f "
+           "pending, %ld local atoms not found through the atom map\n",
+           nranks(), re->counter(FixParcelReinject::TOTAL_OUT_N), re->counter(FixParcelReinject::TOTAL_IN_N),
+           static_cast<double>(atom->natoms), upper, re->counter(FixParcelReinject::PENDING_N), unmapped);
+  EXPECT_EQ(re->counter(FixParcelReinject::TOTAL_IN_N), static_cast<double>(kBurst));
+  EXPECT_EQ(upper, kBurst);
+  EXPECT_EQ(static_cast<long>(atom->natoms), kBurst);
+  EXPECT_EQ(unmapped, 0);
 }
