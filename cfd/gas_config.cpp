@@ -43,8 +43,10 @@ GasConfig::GasConfig(const YAML::Node& root) {
 MeshSettings GasConfig::readMesh(const YamlSection& s) {
   s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights"});
   MeshSettings m;
-  m.origin = s.vec3("origin", Vec3::Zero(), Range::any());
-  m.lengths = s.vec3("lengths", std::nullopt, Range::positive());
+  // Up to 10 km, far beyond any apparatus: at 1e300 m the first pressure solve did no iteration and the
+  // run went on until the blow-up guard stopped it (the coordinates lose all precision).
+  m.origin = s.vec3("origin", Vec3::Zero(), Range::closed(-1e4, 1e4));
+  m.lengths = s.vec3("lengths", std::nullopt, Range::leftOpen(0.0, 1e4));
   m.cells = s.int3("cells", 1, 100000);
   // Every rank holds about 24 bytes per background cell of index maps (mesh builder, mesh, the coupling's
   // owner map) and global cell ids are int: refuse before allocating (cfd/README.md, mesh).

@@ -26,6 +26,21 @@ std::string exactNumber(double v) {
   return buf;
 }
 
+// LIGGGHTS stops on an error in the case's script with MPI_Finalize and exit(1) (Error::all; its class has
+// no virtual hook). While the script runs, an exit handler says that the error above came from the case's
+// script and the liggghts.variables it got, and ends the process with code 2, a user error like every other.
+// (Errors of a single rank, Error::one, end in MPI_Abort without exit handlers: LIGGGHTS' code 1 stays.)
+bool script_running = false;
+int script_rank = 0;
+std::string script_note;
+
+void reportScriptError() {
+  if (!script_running) return;
+  if (script_rank == 0) std::fputs(script_note.c_str(), stderr);
+  std::fflush(nullptr);
+  std::_Exit(2);
+}
+
 }  // namespace
 
 DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::string& case_folder,
@@ -56,7 +71,26 @@ void DemEngine::start(const std::string& restart_file) {
   if (chdir(case_folder_.c_str()) != 0)
     throw cfd::ConfigError("cannot enter the case folder '" + case_folder_ + "'");
   lammps_ = std::make_unique<LiggghtsInstance>(world_, args);
-  lammps_->runFile(settings_.liggghts.script);
+  static const bool handler_installed = std::atexit(reportScriptError) == 0;
+  MPI_Comm_rank(world_, &script_rank);
+  std::string passed = "liggghts.variables:";
+  for (const auto& [name, value] : settings_.liggghts.variables) passed += " " + name + " = '" + value + "'";
+  if (settings_.liggghts.variables.empty()) passed += " none";
+  script_note = "parcelflow: error in case '" + case_folder_ + "': liggghts.script = " + settings_.liggghts.script +
+                " stopped with the LIGGGHTS ERROR above, before the coupled run; " + passed + "\n";
+  struct ScriptRunning {  // also reset when the script's run throws a user error (contact time)
+    explicit ScriptRunning(bool on) { script_running = on; }
+    ~ScriptRunning() { script_running = false; }
+  };
+  {
+    const ScriptRunning running(handler_installed);
+    try {
+      lammps_->runFile(settings_.liggghts.script);
+    } catch (const cfd::ConfigError& e) {  // found in one of the script's runs: it may come from a variable
+      throw cfd::ConfigError(std::string(e.what()) + " (in liggghts.script = " + settings_.liggghts.script + "; " +
+                             passed + ")");
+    }
+  }
   const double script_dt = lammps_->lammps()->update->dt;
   if (std::abs(script_dt - time.dem_step) > 1e-12 * time.dem_step)
     throw cfd::ConfigError("time.dem_step is " + exactNumber(time.dem_step) +

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "cfd/config_error.hpp"
 
@@ -11,16 +12,20 @@ namespace parcelflow::coupling {
 PlaneAverages::PlaneAverages(const cfd::Mesh& mesh, const std::vector<double>& heights, const char* key) : mesh_(mesh) {
   const auto& bg = mesh.background();
   for (int c = 0; c < mesh.nOwnedCells(); ++c) layer_of_cell_.push_back(bg.ijk(mesh.backgroundIndex(c))[2]);
+  const double bottom = bg.origin()[2], top = bottom + bg.n()[2] * bg.spacing()[2];
   for (double z : heights) {
-    const int layer = static_cast<int>(std::floor((z - bg.origin()[2]) / bg.spacing()[2]));
+    // outside the mesh (or not a number) no layer, and no out-of-range conversion to int
+    const int layer = z >= bottom && z < top ? static_cast<int>(std::floor((z - bottom) / bg.spacing()[2])) : -1;
     double local_volume = 0.0, volume = 0.0;
     for (int c = 0; c < mesh.nOwnedCells(); ++c)
       if (layer_of_cell_[c] == layer) local_volume += mesh.cellVolume(c);
     MPI_Allreduce(&local_volume, &volume, 1, MPI_DOUBLE, MPI_SUM, mesh.comm());
-    if (volume == 0.0)
-      throw cfd::ConfigError(std::string(key) + ": height " + std::to_string(z) +
-                             " m has no fluid cell (the mesh spans z from " + std::to_string(bg.origin()[2]) + " to " +
-                             std::to_string(bg.origin()[2] + bg.n()[2] * bg.spacing()[2]) + " m)");
+    if (volume == 0.0) {
+      char text[200];
+      std::snprintf(text, sizeof text, ": height %g m has no fluid cell (the mesh spans z from %g to %g m)", z,
+                    bottom, top);
+      throw cfd::ConfigError(key + std::string(text));
+    }
     layer_of_plane_.push_back(layer);
     height_.push_back(z);
     layer_centre_.push_back(bg.origin()[2] + (layer + 0.5) * bg.spacing()[2]);

@@ -19,6 +19,7 @@
 #include "output_folder.h"
 #include "parcel_mesh_coupler.h"
 #include "parcel_writer.h"
+#include "plane_averages.h"
 #include "progress_line.h"
 #include "run_counters.h"
 #include "run_warnings.h"
@@ -131,6 +132,12 @@ void CoupledRun::initialize() {
 
   s.gas = std::make_unique<cfd::GasSolver>(s.case_def.gas, MPI_COMM_WORLD);
   const cfd::Mesh& mesh = s.gas->mesh();
+  // the monitor heights against the mesh now, before LIGGGHTS fills and settles the bed (the monitors
+  // themselves need the parcels)
+  PlaneAverages(mesh, cs.monitors.pressure_planes, "monitors.pressure_planes");
+  if (cs.monitors.has_bed_pressure_drop)
+    PlaneAverages(mesh, {cs.monitors.bed_pressure_drop[0], cs.monitors.bed_pressure_drop[1]},
+                  "monitors.bed_pressure_drop");
   std::vector<long> owned(mesh.nOwnedCells());
   for (int c = 0; c < mesh.nOwnedCells(); ++c) owned[c] = mesh.backgroundIndex(c);
   s.owners = std::make_unique<CellOwnerMap>(MPI_COMM_WORLD, mesh.background().size(), owned);
