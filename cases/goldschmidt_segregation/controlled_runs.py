@@ -36,6 +36,13 @@ VARIANTS = {
     "gidaspow": ("Gidaspow drag instead of Wen-Yu", {"coupling.drag": "Gidaspow"}, {}),
     "beetstra": ("Beetstra (BVK) drag instead of Wen-Yu", {"coupling.drag": "BeetstraVanDerHoefKuipers"}, {}),
     "cells_z_188": ("188 gas cells over the height (3.7 mm) instead of 94 (7.4 mm)", {"mesh.cells": [47, 5, 188]}, {}),
+    "cells_z_219": ("219 gas cells over the height (3.2 mm: cubic cells, as the paper says) instead of 94",
+                    {"mesh.cells": [47, 5, 219]}, {}),
+    "cells_z_219_gidaspow": ("cubic cells (219 over the height) and Gidaspow drag",
+                             {"mesh.cells": [47, 5, 219], "coupling.drag": "Gidaspow"}, {}),
+    "velocity_0.8": ("inlet 0.8 m/s instead of 1.1: the settled bed (a_g 0.37, denser than the experiment's) has a "
+                     "lower U_mf, so this keeps about the experiment's U/U_mf",
+                     {"boundaries.zmin": {"type": "velocity_inlet", "superficial_velocity": [0, 0, 0.8]}}, {}),
     "centroid": ("centroid kernel instead of Gaussian", {"coupling.kernel": {"type": "centroid"}}, {}),
     "kernel_wide": ("Gaussian sharpness 0.5 (wider)",
                     {"coupling.kernel": {"type": "gaussian", "sharpness": 0.5, "radius": 2}}, {}),
