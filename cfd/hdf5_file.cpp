@@ -20,12 +20,12 @@ long rowOffset(long rows, MPI_Comm comm) {
   return rank == 0 ? 0 : offset;  // MPI_Exscan leaves rank 0's result undefined
 }
 
-Hdf5Writer::Hdf5Writer(const std::string& path, MPI_Comm comm) : path_(path) {
+Hdf5Writer::Hdf5Writer(const std::string& path, MPI_Comm comm) : path_(path), comm_(comm) {
   const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
   H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL);
-  id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  id_ = H5Fcreate(partialPath(path).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
   H5Pclose(fapl);
-  check(id_ >= 0, "creating the file (does the folder exist and is it writable?)", path);
+  check(id_ >= 0, "creating the file (does the folder exist and is it writable?)", partialPath(path));
 }
 
 Hdf5Writer::~Hdf5Writer() {
@@ -33,9 +33,11 @@ Hdf5Writer::~Hdf5Writer() {
 }
 
 void Hdf5Writer::close() {
-  const herr_t status = H5Fclose(id_);
+  int closed = H5Fclose(id_) >= 0, all_closed = 0;
   id_ = -1;
-  check(status >= 0, "closing", path_);
+  MPI_Allreduce(&closed, &all_closed, 1, MPI_INT, MPI_MIN, comm_);  // every rank throws, or none
+  check(all_closed != 0, "closing", partialPath(path_));
+  publishFile(path_, comm_);
 }
 
 void Hdf5Writer::write(const std::string& name, const double* data, long totalRows, long offset, long rows,

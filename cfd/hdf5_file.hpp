@@ -5,14 +5,33 @@
 #include <hdf5.h>
 #include <mpi.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace parcelflow::cfd {
 
+// An HDF5 file is written as PATH.partial and renamed to PATH once closed on every rank, so that a run
+// killed while writing (SIGKILL, a node failure) leaves no file under the real name that does not open.
+inline std::string partialPath(const std::string& path) { return path + ".partial"; }
+// Collective: rank 0 renames partialPath(path) to path; throws on every rank if that fails. (Inline: the
+// parcel writer's library uses it without the gas solver's.)
+inline void publishFile(const std::string& path, MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  int error = 0;
+  if (rank == 0 && std::rename(partialPath(path).c_str(), path.c_str()) != 0) error = errno;
+  MPI_Bcast(&error, 1, MPI_INT, 0, comm);
+  if (error) throw std::runtime_error("cannot rename " + partialPath(path) + " to " + path + ": " + std::strerror(error));
+}
+
 class Hdf5Writer {
  public:
-  Hdf5Writer(const std::string& path, MPI_Comm comm);  // creates (truncates) the file, collectively
+  // creates (truncates) partialPath(path), collectively; close() publishes it as `path`
+  Hdf5Writer(const std::string& path, MPI_Comm comm);
   ~Hdf5Writer();
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
@@ -40,6 +59,7 @@ class Hdf5Writer {
   void writeAtTyped(const std::string& name, hid_t type, const void* data, long totalRows,
                     const std::vector<long>& rowIndex, int width);
   std::string path_;
+  MPI_Comm comm_;
   hid_t id_ = -1;
 };
 

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "cfd/hdf5_file.hpp"
 #include "cfd/internal_error.hpp"
 
 namespace parcelflow::coupling {
@@ -125,7 +126,9 @@ void ParcelWriter::write(double time, const ParcelSnapshot& local) {
   {
     Handle fapl(check(H5Pcreate(H5P_FILE_ACCESS), "creating", path), H5Pclose);
     check(H5Pset_fapl_mpio(fapl, comm_, MPI_INFO_NULL), "creating", path);
-    Handle file(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "creating", path), H5Fclose);
+    Handle file(check(H5Fcreate(cfd::partialPath(path).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "creating",
+                      cfd::partialPath(path)),
+                H5Fclose);
     writeRows(file, path, "time", H5T_NATIVE_DOUBLE, &time, 1, 0, rank_ == 0 ? 1 : 0, 1);
     writeRows(file, path, "position", H5T_NATIVE_DOUBLE, local.x.data(), total, offset, n, 3);
     writeRows(file, path, "velocity", H5T_NATIVE_DOUBLE, local.v.data(), total, offset, n, 3);
@@ -138,7 +141,8 @@ void ParcelWriter::write(double time, const ParcelSnapshot& local) {
     writeRows(file, path, "connectivity", H5T_NATIVE_INT64, vertices.data(), total, offset, n, 1);
     int closed = file.close() >= 0, all_closed = 0;
     MPI_Allreduce(&closed, &all_closed, 1, MPI_INT, MPI_MIN, comm_);
-    if (!all_closed) throw std::runtime_error("HDF5: closing " + path + " failed");
+    if (!all_closed) throw std::runtime_error("HDF5: closing " + cfd::partialPath(path) + " failed");
+    cfd::publishFile(path, comm_);
   }
   times_.push_back(time);
   counts_.push_back(total);
