@@ -144,7 +144,7 @@ if averaged:
     centre, sel, index, shape, extent = mid_plane(os.path.join(folder, "averages_mesh.h5"))
     with h5py.File(averaged[-1], "r") as f:
         fields = {k: np.asarray(f[k]) for k in ("mean_solids_fraction", "mean_gas_speed", "mean_solids_speed")}
-    fig, axes = plt.subplots(1, 3, figsize=(8, 7))
+    fig, axes = plt.subplots(1, 3, figsize=(9, 7), layout="constrained")
     for ax, (name, values) in zip(axes, fields.items()):
         image = ax.imshow(slice_of(values, sel, index, shape), origin="lower", extent=extent, cmap="viridis",
                           aspect="auto", vmin=0, vmax=np.nanpercentile(values, 99) if name != "mean_solids_fraction" else 0.6)

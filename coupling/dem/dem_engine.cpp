@@ -4,13 +4,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
 #include "cfd/config_error.hpp"
 #include "contact_time_check.h"
 #include "lammps.h"
 #include "liggghts_instance.h"
+#include "script_error_report.h"
 #include "script_variables.h"
 #include "update.h"
 
@@ -26,21 +26,6 @@ std::string exactNumber(double v) {
   return buf;
 }
 
-// LIGGGHTS stops on an error in the case's script with MPI_Finalize and exit(1) (Error::all; its class has
-// no virtual hook). While the script runs, an exit handler says that the error above came from the case's
-// script and the liggghts.variables it got, and ends the process with code 2, a user error like every other.
-// (Errors of a single rank, Error::one, end in MPI_Abort without exit handlers: LIGGGHTS' code 1 stays.)
-bool script_running = false;
-int script_rank = 0;
-std::string script_note;
-
-void reportScriptError() {
-  if (!script_running) return;
-  if (script_rank == 0) std::fputs(script_note.c_str(), stderr);
-  std::fflush(nullptr);
-  std::_Exit(2);
-}
-
 }  // namespace
 
 DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::string& case_folder,
@@ -54,7 +39,7 @@ DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::st
                                    reserved + " itself");
   std::vector<std::string> passed(std::begin(kReservedVariables), std::end(kReservedVariables));
   for (const auto& variable : settings.liggghts.variables) passed.push_back(variable.first);
-  checkScriptVariables(case_folder, settings.liggghts.script, passed);
+  checkScriptVariables(case_folder, settings.liggghts.script, passed, settings.liggghts.variables);
 }
 
 DemEngine::~DemEngine() = default;
@@ -71,19 +56,17 @@ void DemEngine::start(const std::string& restart_file) {
   if (chdir(case_folder_.c_str()) != 0)
     throw cfd::ConfigError("cannot enter the case folder '" + case_folder_ + "'");
   lammps_ = std::make_unique<LiggghtsInstance>(world_, args);
-  static const bool handler_installed = std::atexit(reportScriptError) == 0;
-  MPI_Comm_rank(world_, &script_rank);
+  int rank = 0;
+  MPI_Comm_rank(world_, &rank);
   std::string passed = "liggghts.variables:";
   for (const auto& [name, value] : settings_.liggghts.variables) passed += " " + name + " = '" + value + "'";
   if (settings_.liggghts.variables.empty()) passed += " none";
-  script_note = "parcelflow: error in case '" + case_folder_ + "': liggghts.script = " + settings_.liggghts.script +
-                " stopped with the LIGGGHTS ERROR above, before the coupled run; " + passed + "\n";
-  struct ScriptRunning {  // also reset when the script's run throws a user error (contact time)
-    explicit ScriptRunning(bool on) { script_running = on; }
-    ~ScriptRunning() { script_running = false; }
-  };
   {
-    const ScriptRunning running(handler_installed);
+    const ScriptErrorReport report("parcelflow: error in case '" + case_folder_ + "': liggghts.script = " +
+                                       settings_.liggghts.script +
+                                       " stopped with the LIGGGHTS ERROR above, before the coupled run; " + passed +
+                                       "\n",
+                                   rank);
     try {
       lammps_->runFile(settings_.liggghts.script);
     } catch (const cfd::ConfigError& e) {  // found in one of the script's runs: it may come from a variable
@@ -101,8 +84,6 @@ void DemEngine::start(const std::string& restart_file) {
     throw cfd::ConfigError("liggghts.script", settings_.liggghts.script,
                            "a script that inserts at least one parcel (LIGGGHTS has none when it ends)");
   const std::string contact = checkContactTime(lammps_->lammps(), time.dem_step);
-  int rank = 0;
-  MPI_Comm_rank(world_, &rank);
   if (rank == 0 && !contact.empty())
     std::printf("parcelflow: DEM step %g s; %s (allowed: at least %.0f)\n", time.dem_step, contact.c_str(),
                 kStepsPerContact);

@@ -1,5 +1,9 @@
 #include "script_variables.h"
 
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -23,9 +27,18 @@ struct Reference {
   bool conditional = false;  // inside the quoted commands of an `if`: substituted only if that branch runs
 };
 
+// A reference that is the whole argument of a keyword LIGGGHTS reads with atoi or atoll, which take the
+// leading digits and ignore the rest: "1e5" parcels would be 1 parcel, without a word.
+struct WholeNumberUse {
+  std::string name, keyword;
+  Place place;
+  long long largest = 0;
+};
+
 struct Scan {
   std::map<std::string, Place> first_definition;
   std::vector<Reference> used;
+  std::vector<WholeNumberUse> whole_numbers;
   std::map<std::pair<std::string, std::string>, long> labels;  // (file, label) -> order
   std::vector<std::pair<std::pair<std::string, std::string>, long>> jumps;
   long order = 0;
@@ -37,6 +50,13 @@ const std::regex kInclude(R"(^\s*include\s+(\S+)\s*$)");
 const std::regex kLabel(R"(^\s*label\s+(\S+))");
 const std::regex kJump(R"(^\s*jump\s+(\S+)(?:\s+(\S+))?)");
 const std::regex kIf(R"(^\s*if\s)");
+// Arguments LIGGGHTS reads with atoi / atoll (LIGGGHTS 3.8 sources): `run N start M stop K` (also as the
+// command of an `if` branch), and the counts of the fix insert styles
+const std::regex kRunSteps(R"((?:^\s*|["'])run\s+$)");
+const std::regex kRunCommand(R"((?:^\s*|["'])run\s)");
+const std::regex kRunBound(R"(\s(?:start|stop)\s+$)");
+const std::regex kInsertFix(R"(^\s*fix\s+\S+\s+\S+\s+insert/)");
+const std::regex kInsertCount(R"(\s(particles_in_region|maxattempt|insert_every|every|start)\s+$)");
 
 // A line without its comment (LIGGGHTS: '#' outside quotes starts one).
 std::string withoutComment(const std::string& line) {
@@ -87,9 +107,20 @@ void scanLine(const std::string& folder, const std::string& file, const std::str
               Scan& s) {
   const Place here{file, number, ++s.order};
   const bool branch = std::regex_search(line, kIf);
-  for (std::sregex_iterator m(line.begin(), line.end(), kReference), end; m != end; ++m)
-    s.used.push_back({(*m)[1].matched ? (*m)[1].str() : (*m)[2].str(), here,
-                      branch && quoted(line, static_cast<std::size_t>(m->position()))});
+  for (std::sregex_iterator m(line.begin(), line.end(), kReference), end; m != end; ++m) {
+    const std::string name = (*m)[1].matched ? (*m)[1].str() : (*m)[2].str();
+    const auto at = static_cast<std::size_t>(m->position());
+    s.used.push_back({name, here, branch && quoted(line, at)});
+    const std::size_t after = at + static_cast<std::size_t>(m->length());
+    std::smatch keyword;
+    const std::string before = line.substr(0, at);
+    if (after != line.size() && !std::isspace(static_cast<unsigned char>(line[after]))) continue;
+    if (std::regex_search(line, kInsertFix) && std::regex_search(before, keyword, kInsertCount))
+      s.whole_numbers.push_back({name, keyword[1], here, INT_MAX});
+    else if (std::regex_search(before, kRunSteps) ||
+             (std::regex_search(before, kRunCommand) && std::regex_search(before, kRunBound)))
+      s.whole_numbers.push_back({name, "run", here, LLONG_MAX});
+  }
   for (std::sregex_iterator m(line.begin(), line.end(), kDefinition), end; m != end; ++m)
     s.first_definition.emplace((*m)[1], here);
   std::smatch match;
@@ -102,12 +133,27 @@ void scanLine(const std::string& folder, const std::string& file, const std::str
 
 std::string where(const Place& p) { return p.file + " line " + std::to_string(p.line); }
 
+bool wholeNumber(const std::string& text, long long largest) {
+  if (!std::regex_match(text, std::regex(R"(\s*[+-]?[0-9]+\s*)"))) return false;
+  errno = 0;
+  const long long value = std::strtoll(text.c_str(), nullptr, 10);
+  return errno == 0 && value <= largest && value >= -largest;
+}
+
 }  // namespace
 
 void checkScriptVariables(const std::string& folder, const std::string& script,
-                          const std::vector<std::string>& passed) {
+                          const std::vector<std::string>& passed,
+                          const std::vector<std::pair<std::string, std::string>>& values) {
   Scan s;
   scanFile(folder, script, 0, s);
+  for (const WholeNumberUse& use : s.whole_numbers)
+    for (const auto& [name, value] : values)
+      if (name == use.name && !wholeNumber(value, use.largest))
+        throw cfd::ConfigError("liggghts.variables." + name, value,
+                               "a whole number written in digits, at most " + std::to_string(use.largest) + ": " +
+                                   where(use.place) + " gives it to `" + use.keyword +
+                                   "`, which LIGGGHTS reads with atoi or atoll: they take the leading digits and drop the rest");
   const std::set<std::string> outside(passed.begin(), passed.end());
   // A jump back to an earlier label may run a definition before a use that precedes it in the file.
   bool backward_jump = false;

@@ -8,13 +8,17 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace parcelflow::coupling {
 
 // `script` is opened from `folder` (LIGGGHTS runs there); throws cfd::ConfigError naming the variable,
-// the file and the line of its first reference.
+// the file and the line of its first reference. Also refuses a value of `values` (liggghts.variables) that is
+// not a whole number in digits where the script gives it to `run` or to a fix insert keyword that LIGGGHTS
+// reads with atoi (`particles_in_region`, `maxattempt`, `insert_every`, `every`, `start`).
 void checkScriptVariables(const std::string& folder, const std::string& script,
-                          const std::vector<std::string>& passed);
+                          const std::vector<std::string>& passed,
+                          const std::vector<std::pair<std::string, std::string>>& values);
 
 }  // namespace parcelflow::coupling

@@ -178,7 +178,7 @@ void CoupledRun::initialize() {
       s.rank == 0, checkpoint ? checkpoint->loop.monitor_bytes : -1);
 
   s.progress.end_time = cs.time.end;
-  s.progress.time = s.loop.time;
+  s.progress.time = s.progress.start_time = s.loop.time;
   s.wall_start = MPI_Wtime();
   s.next_progress = cs.output.progress_interval;
   installStopSignalHandlers();

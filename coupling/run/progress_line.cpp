@@ -1,5 +1,6 @@
 #include "progress_line.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -21,7 +22,9 @@ int percentOf(double part, double whole) { return whole > 0.0 ? static_cast<int>
 
 std::string formatProgress(const ProgressState& s) {
   const double fraction = s.end_time > 0.0 ? s.time / s.end_time : 1.0;
-  const double eta = fraction > 0.0 ? s.wall_seconds * (1.0 - fraction) / fraction : INFINITY;
+  // the wall time counts from this run's start, so the ETA extrapolates this run's part only
+  const double done = s.time - s.start_time, left = s.end_time - s.time;
+  const double eta = done > 0.0 ? s.wall_seconds * std::max(left, 0.0) / done : INFINITY;
   const double rate = s.wall_seconds > 0.0 ? s.parcel_steps / s.wall_seconds : 0.0;
   const double busy = s.split.total();
   char buf[256];

@@ -21,6 +21,7 @@ class WallClockSplit {
 
 struct ProgressState {
   double time = 0.0;          // simulated time done [s]
+  double start_time = 0.0;    // simulated time at which this run started (a checkpoint's, or 0) [s]
   double end_time = 0.0;      // simulated time to do [s]
   double wall_seconds = 0.0;  // since the coupled loop started
   double parcel_steps = 0.0;  // sum over DEM steps of the number of parcels

@@ -1,5 +1,5 @@
 """Inputs that used to crash (uncaught exceptions, segfaults, aborts) now stop with a message naming the key or
-file, the value and what is allowed: exit code 2 for user errors, before any work; a non-finite parcel value
+file, the value and what is allowed: exit code 2 for user errors, before any work (also where LIGGGHTS stops on an error one rank found); a non-finite parcel value
 found during the run stops all ranks with the parcel's id, the value and the time (exit code != 0)."""
 import os
 
@@ -60,6 +60,19 @@ def variable_used_before_its_definition(runs):
            0, "done:")
 
 
+def error_found_by_one_rank(runs):
+    """LIGGGHTS' Error::one (here fix parcel refusing a sphere of the wrong diameter, on the rank that inserted
+    it) ends in MPI_Abort: it used to exit with code 1 and no word from parcelflow."""
+    def wrong_diameter(text):
+        return text.replace("fix  parcels all parcel mode constant_np np ${np} scaling linear",
+                            "fix  parcels all parcel mode constant_diameter diameter 0.05 dp 0.001")
+    case = runs.case(script=wrong_diameter)
+    for ranks in (1, 2):
+        expect(f"a sphere refused by fix parcel, {ranks} rank(s)", runs.run(case, ranks=ranks), 2, "ERROR on proc",
+               "'mode constant_diameter diameter' is 0.05", "liggghts.script = column.in stopped with the LIGGGHTS ERROR",
+               "nparcels = '300'")
+
+
 def infinite_parcel_velocity(runs):
     case = runs.case(script=lambda text: text + "set atom 7 vx 1e400\n")
     expect("parcel 7 with an infinite velocity", runs.run(case), None, "parcel 7 has a non-finite velocity", "inf",
@@ -68,4 +81,5 @@ def infinite_parcel_velocity(runs):
 
 if __name__ == "__main__":
     main([unwritable_output, case_yaml_is_a_folder, end_below_one_gas_step, values_the_solver_cannot_honour,
-          undefined_script_variable, variable_used_before_its_definition, infinite_parcel_velocity])
+          undefined_script_variable, variable_used_before_its_definition, error_found_by_one_rank,
+          infinite_parcel_velocity])

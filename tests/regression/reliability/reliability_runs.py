@@ -42,10 +42,12 @@ class Runs:
 
         return copy_case(COLUMN, folder, settings, prepare)
 
-    def run(self, case, *args, end=10 * GAS_STEP, output=None, timeout=300):
-        """(exit code, stdout + stderr, output folder) of `parcelflow run case`."""
+    def run(self, case, *args, end=10 * GAS_STEP, output=None, timeout=300, ranks=None):
+        """(exit code, stdout + stderr, output folder) of `parcelflow run case` (on `ranks` instead of the
+        driver's ranks if given)."""
         output = output or os.path.join(os.path.dirname(case), "output")
-        command = self.launcher + [self.parcelflow, "run", case, "--output", output] + list(args)
+        launcher = self.launcher if ranks is None else self.launcher[:-1] + [str(ranks)]
+        command = launcher + [self.parcelflow, "run", case, "--output", output] + list(args)
         if end is not None:
             command += ["--end", repr(end)]
         try:

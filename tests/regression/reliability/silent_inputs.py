@@ -1,6 +1,7 @@
 """Inputs that used to run on silently or mislead now stop with exit code 2 naming the key, the value and what
 is allowed (a duplicated key in case.yaml with both lines, gas_step > end, a gas step of 2^32 DEM steps, a
-liggghts.variables entry that parcelflow sets itself), and a fresh run in a folder that holds an earlier run's
+liggghts.variables entry that parcelflow sets itself, a count that LIGGGHTS would read as its leading digits),
+and a fresh run in a folder that holds an earlier run's
 output says so at the start and removes that run's snapshots, XDMF indexes and checkpoints, so that every
 snapshot file in the folder is one the new XDMF lists. A continued run (--restart) leaves them in place."""
 import glob
@@ -29,6 +30,22 @@ def time_settings(runs):
                                                   end=None), 2, "time.gas_step", "at most 1e6 DEM steps")
     expect("liggghts.variables.dem_step", runs.run(runs.case(lambda s: s["liggghts"]["variables"].update(
         dem_step="1e-5"))), 2, "liggghts.variables.dem_step", "parcelflow sets dem_step itself")
+
+
+def counts_not_written_in_digits(runs):
+    """LIGGGHTS reads `particles_in_region` and `run` counts with atoi / atoll, which take the leading digits:
+    nparcels "1e300" inserted 1 parcel and ran on."""
+    script = os.path.join(runs.case(), "column.in")
+    line = next(n for n, l in enumerate(open(script), 1) if l.startswith("fix  insert"))  # continued below
+    for value in ("1e300", "1146.0", "1e3", "99999999999"):
+        expect(f"nparcels = {value}", runs.run(runs.case(lambda s: s["liggghts"]["variables"].update(
+            nparcels=value))), 2, f"liggghts.variables.nparcels = {value}", "a whole number written in digits",
+            f"column.in line {line}", "particles_in_region")
+
+    def run_variable(text):
+        return text.replace("run             2000", "run             ${relax}")
+    case = runs.case(lambda s: s["liggghts"]["variables"].update(relax="2e3"), script=run_variable)
+    expect("run ${relax} with relax = 2e3", runs.run(case), 2, "liggghts.variables.relax = 2e3", "`run`")
 
 
 def snapshots(out):
@@ -72,4 +89,4 @@ def earlier_run_in_the_folder(runs):
 
 
 if __name__ == "__main__":
-    main([duplicated_key, time_settings, earlier_run_in_the_folder])
+    main([duplicated_key, time_settings, counts_not_written_in_digits, earlier_run_in_the_folder])

@@ -1,0 +1,34 @@
+// The progress line's ETA extrapolates the wall time of this run over the simulated time this run has done:
+// a run continued from a checkpoint at 45 s that took 60 s of wall time for 1 s has 4 s, 240 s, left.
+#include <gtest/gtest.h>
+
+#include "progress_line.h"
+
+using namespace parcelflow::coupling;
+
+namespace {
+ProgressState state(double start, double time, double end, double wall) {
+  ProgressState s;
+  s.start_time = start;
+  s.time = time;
+  s.end_time = end;
+  s.wall_seconds = wall;
+  return s;
+}
+}  // namespace
+
+TEST(ProgressLine, EtaOfAFreshRun) {
+  const std::string line = formatProgress(state(0.0, 0.25, 1.0, 30.0));
+  EXPECT_NE(line.find("( 25.0 %)"), std::string::npos) << line;
+  EXPECT_NE(line.find("ETA 0:01:30"), std::string::npos) << line;
+}
+
+TEST(ProgressLine, EtaOfARunContinuedFromACheckpointCountsOnlyThisRunsPart) {
+  const std::string line = formatProgress(state(45.0, 46.0, 50.0, 60.0));
+  EXPECT_NE(line.find("( 92.0 %)"), std::string::npos) << line;
+  EXPECT_NE(line.find("ETA 0:04:00"), std::string::npos) << line;
+}
+
+TEST(ProgressLine, NoEtaBeforeAnyStep) {
+  EXPECT_NE(formatProgress(state(45.0, 45.0, 50.0, 0.0)).find("ETA --:--:--"), std::string::npos);
+}
