@@ -1,6 +1,7 @@
 #include "command_line.h"
 
 #include <cmath>
+#include <set>
 
 namespace parcelflow::coupling {
 
@@ -50,10 +51,14 @@ CommandLine parseRun(const std::vector<std::string>& args) {
     throw UsageError("'parcelflow run' needs a case folder: parcelflow run CASE [--output DIR] [--end SECONDS] "
                      "[--restart CHECKPOINT]");
   cl.case_folder = args[1];
+  std::set<std::string> given;
   for (std::size_t i = 2; i < args.size(); i += 2) {
     const std::string& opt = args[i];
+    if (!given.insert(opt).second)  // one value would win silently
+      throw UsageError("option '" + opt + "' is given twice; allowed: each option once");
     if (opt == "--output") {
-      if (i + 1 >= args.size()) throw UsageError("option '--output' needs a folder: --output DIR");
+      if (i + 1 >= args.size() || args[i + 1].empty())
+        throw UsageError("option '--output' needs a folder: --output DIR (a non-empty path)");
       cl.output_folder = args[i + 1];
     } else if (opt == "--end") {
       if (i + 1 >= args.size()) throw UsageError("option '--end' needs a time: --end SECONDS");

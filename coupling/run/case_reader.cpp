@@ -195,8 +195,12 @@ CaseDefinition readCase(const std::string& case_folder) {
   c.gas = cfd::GasConfig(root).settings();
   checkFilteredDragAgainstGas(c.settings.coupling, c.gas.gas);
   const std::string script = case_folder + "/" + c.settings.liggghts.script;
-  if (!std::ifstream(script))
-    throw ConfigError("liggghts.script: cannot read '" + script + "' (path relative to the case folder)");
+  if (!std::filesystem::is_regular_file(script) || !std::ifstream(script))
+    throw ConfigError("liggghts.script", c.settings.liggghts.script,
+                      "a readable file, path relative to the case folder (cannot read '" + script + "')");
+  if (std::filesystem::file_size(script) == 0)
+    throw ConfigError("liggghts.script", c.settings.liggghts.script,
+                      "a LIGGGHTS input script that sets up the parcels ('" + script + "' is empty)");
   return c;
 }
 

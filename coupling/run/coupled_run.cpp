@@ -111,6 +111,7 @@ std::string CoupledRun::lastCheckpoint() const { return s_->last_checkpoint; }
 void CoupledRun::initialize() {
   State& s = *s_;
   MPI_Comm_rank(MPI_COMM_WORLD, &s.rank);
+  installStartUpSignalHandlers(s.rank);
   // Everything parcelflow reads is checked before any work starts.
   s.case_def = readCase(s.options.case_folder);
   const CaseSettings& cs = s.case_def.settings;

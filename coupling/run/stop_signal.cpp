@@ -1,6 +1,9 @@
 #include "stop_signal.h"
 
+#include <unistd.h>
+
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 
 namespace parcelflow::coupling {
@@ -11,16 +14,37 @@ volatile std::sig_atomic_t received = 0;
 
 void raiseFlag(int signal) { received = signal; }
 
-}  // namespace
+char start_up_message[256];
+int start_up_message_length = 0;
 
-void installStopSignalHandlers() {
+// async-signal-safe: write(2) and _exit(2) only
+void stopDuringStartUp(int signal) {
+  if (start_up_message_length > 0) (void)!write(STDERR_FILENO, start_up_message, start_up_message_length);
+  _exit(128 + signal);
+}
+
+void installHandler(void (*handler)(int)) {
   struct sigaction action {};
-  action.sa_handler = raiseFlag;
+  action.sa_handler = handler;
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   // Open MPI turns a SIGINT to mpirun into SIGTERM to its children: treat both alike.
   sigaction(SIGTERM, &action, nullptr);
 }
+
+}  // namespace
+
+void installStartUpSignalHandlers(int rank) {
+  const int n = std::snprintf(start_up_message, sizeof start_up_message,
+                              "parcelflow: rank %d: stopped by a signal before the coupled run started (while the "
+                              "case's LIGGGHTS script or the set-up ran): no checkpoint exists yet; run again to "
+                              "start over\n",
+                              rank);
+  start_up_message_length = n > 0 && n < static_cast<int>(sizeof start_up_message) ? n : 0;
+  installHandler(stopDuringStartUp);
+}
+
+void installStopSignalHandlers() { installHandler(raiseFlag); }
 
 int stopRequested(MPI_Comm comm) {
   int local = received, any = 0;

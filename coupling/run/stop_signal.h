@@ -7,6 +7,10 @@
 
 namespace parcelflow::coupling {
 
+// Before the coupled loop (LIGGGHTS' filling and settling can take minutes) there is nothing to checkpoint:
+// a signal ends the rank that got it at once, with a line saying so and exit code 128 + signal (mpirun then
+// ends the others). Without this, the default action ended the job with code 1 and no word.
+void installStartUpSignalHandlers(int rank);
 void installStopSignalHandlers();
 // The signal any rank got (0: none). Collective: one all-reduce of one int.
 int stopRequested(MPI_Comm comm);

@@ -21,6 +21,8 @@
                   parcels' volume (deposition conserves it: 1e-12), and B's averages equal A's after the restart.
   signal R:       SIGTERM to mpirun (and, with 2 ranks, to one rank only) stops the run within a coupling step
                   with a checkpoint, exit code 143 and the command to continue; continuing it appends rows.
+                  The same signals while LIGGGHTS fills and settles the bed end the job at once (non-zero, a line
+                  saying no checkpoint exists yet, the case folder unchanged).
                   A checkpoint that takes longer than mpirun's grace after a signal (odls_base_sigkill_timeout,
                   0 s here) is warned about once; with a grace of 30 s it is not.
 """
@@ -229,6 +231,41 @@ def stop_with_signal(parcelflow, launcher, work, to_one_rank):
         fail(f"a file was written into the case folder: {leftover}")
 
 
+def stop_during_start_up(parcelflow, launcher, work, to_one_rank):
+    """A signal while LIGGGHTS fills and settles the bed (before the coupled loop) used to end the job by the
+    default action: exit code 1 and no word. Now every rank that gets it says so and ends at once."""
+    folder = os.path.join(work, "start_up")
+    shutil.rmtree(folder, ignore_errors=True)
+    case = copy_case(os.path.join(CASES, "fluidized_column"), folder, edit)
+    before = sorted(os.listdir(case))
+    out = os.path.join(folder, "out")
+    job = subprocess.Popen(launcher + [parcelflow, "run", case, "--output", out, "--end", "5"],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    log = os.path.join(out, "log.liggghts")
+    deadline = time.time() + 300
+    while time.time() < deadline and (not os.path.exists(log) or "Step" not in open(log).read()):
+        time.sleep(0.2)
+    sent = time.time()
+    if to_one_rank:
+        ranks = subprocess.run(["pgrep", "-f", "-P", str(job.pid), "parcelflow"], capture_output=True,
+                               text=True).stdout.split()
+        if not ranks:
+            fail("no rank process found under mpirun")
+        os.kill(int(ranks[-1]), signal.SIGTERM)
+    else:
+        job.send_signal(signal.SIGTERM)
+    stdout, stderr = job.communicate(timeout=300)
+    took = time.time() - sent
+    words = "stopped by a signal before the coupled run started"
+    if job.returncode == 0 or words not in stderr or "monitors.csv" in os.listdir(out) or took > 30:
+        fail(f"SIGTERM during the script: exit {job.returncode} after {took:.1f} s, expected non-zero, '{words}' "
+             f"and no monitors.csv:\n{stdout[-1500:]}{stderr[-1500:]}")
+    if sorted(os.listdir(case)) != before:
+        fail(f"the case folder changed: {sorted(os.listdir(case))} (before: {before})")
+    print(f"[measured] SIGTERM during the script ({'one rank' if to_one_rank else 'mpirun'}): exit {job.returncode} "
+          f"{took:.1f} s after the signal: " + [l for l in stderr.splitlines() if words in l][0])
+
+
 def slow_checkpoint_warning(parcelflow, launcher, work):
     case = copy_case(os.path.join(CASES, "fluidized_column"), os.path.join(work, "grace"), edit)
     warning = "a SIGTERM or Ctrl-C to mpirun would lose the checkpoint"
@@ -260,10 +297,12 @@ def main():
             refusals(parcelflow, launcher, work, case, b_out)
         else:
             stop_with_signal(parcelflow, launcher, work, to_one_rank=False)
+            stop_during_start_up(parcelflow, launcher, work, to_one_rank=False)
             slow_checkpoint_warning(parcelflow, launcher, work)
             if ranks == 2:
                 shutil.rmtree(os.path.join(work, "signal"))
                 stop_with_signal(parcelflow, launcher, work, to_one_rank=True)
+                stop_during_start_up(parcelflow, launcher, work, to_one_rank=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print("PASS")

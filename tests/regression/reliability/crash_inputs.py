@@ -19,6 +19,16 @@ def case_yaml_is_a_folder(runs):
     expect("case.yaml that is a folder", runs.run(case), 2, "case.yaml", "readable file")
 
 
+def script_that_is_a_folder_or_empty(runs):
+    """Both used to pass to LIGGGHTS, which read nothing; the first message was about its default timestep."""
+    case = runs.case()
+    os.remove(os.path.join(case, "column.in"))
+    os.mkdir(os.path.join(case, "column.in"))
+    expect("liggghts.script that is a folder", runs.run(case), 2, "liggghts.script = column.in", "a readable file")
+    case = runs.case(script=lambda text: "")
+    expect("empty liggghts.script", runs.run(case), 2, "liggghts.script = column.in", "is empty")
+
+
 def end_below_one_gas_step(runs):
     expect("--end 1e-300", runs.run(runs.case(), end=1e-300), 2, "--end", "1e-300", "at least one gas step")
 
@@ -80,6 +90,6 @@ def infinite_parcel_velocity(runs):
 
 
 if __name__ == "__main__":
-    main([unwritable_output, case_yaml_is_a_folder, end_below_one_gas_step, values_the_solver_cannot_honour,
+    main([unwritable_output, case_yaml_is_a_folder, script_that_is_a_folder_or_empty, end_below_one_gas_step, values_the_solver_cannot_honour,
           undefined_script_variable, variable_used_before_its_definition, error_found_by_one_rank,
           infinite_parcel_velocity])

@@ -63,4 +63,10 @@ TEST(CommandLine, ErrorsNameTheArgumentAndWhatIsAllowed) {
   EXPECT_NE(usageErrorOf({"dem", "in.x", "-log"}).find("-log FILE"), std::string::npos);
   EXPECT_NE(usageErrorOf({"dem", "in.x", "-echo"}).find("unknown option '-echo'"), std::string::npos);
   EXPECT_NE(usageErrorOf({"--version", "x"}).find("takes no arguments"), std::string::npos);
+  EXPECT_NE(usageErrorOf({"run", "case", "--output", ""}).find("--output DIR (a non-empty path)"), std::string::npos);
+  EXPECT_NE(usageErrorOf({"run", "case", "--end", "1", "--end", "2"}).find("option '--end' is given twice"),
+            std::string::npos);
+  EXPECT_NE(usageErrorOf({"run", "case", "--output", "a", "--end", "1", "--output", "b"})
+                .find("option '--output' is given twice"),
+            std::string::npos);
 }
