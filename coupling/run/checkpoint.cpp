@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -188,7 +189,13 @@ Checkpoint readCheckpoint(const std::string& folder) {
     throw ConfigError(c.paths.loop, "unreadable (" + std::string(e.what()) + ")", "a loop.yaml written by parcelflow");
   }
   if (!fs::exists(c.paths.gas)) throw ConfigError(c.paths.gas, "missing", "the gas state of checkpoint " + c.id);
-  const std::string gas_id = cfd::Hdf5Reader(c.paths.gas).textAttribute("checkpoint_id");
+  std::string gas_id;
+  try {
+    gas_id = cfd::Hdf5Reader(c.paths.gas).textAttribute("checkpoint_id");
+  } catch (const std::runtime_error& e) {
+    throw ConfigError(c.paths.gas, std::string("unreadable (") + e.what() + ")",
+                      "the gas state of checkpoint " + c.id + ", an HDF5 file written by parcelflow");
+  }
   if (gas_id != c.id)
     throw ConfigError(c.paths.gas + ": checkpoint_id", gas_id,
                       "the id of the checkpoint it belongs to, " + c.id +
@@ -201,6 +208,15 @@ Checkpoint readCheckpoint(const std::string& folder) {
                       "the file of checkpoint " + c.id + " (" + std::to_string(expected_size) + " bytes, FNV-1a " +
                           expected_hash + "): parts of different checkpoints must not be combined");
   return c;
+}
+
+void checkLoopTime(const Checkpoint& checkpoint, double gas_step) {
+  const LoopState& l = checkpoint.loop;
+  const double expected = static_cast<double>(l.step) * gas_step;  // the loop's own time: step * gas step
+  if (l.step < 0 || !(std::abs(l.time - expected) <= 1e-9 * std::max(expected, gas_step)))
+    throw ConfigError(checkpoint.paths.loop + ": loop.time", exact(l.time),
+                      "loop.step x time.gas_step = " + exact(expected) + " s (step " + std::to_string(l.step) +
+                          "), as parcelflow writes a checkpoint");
 }
 
 void checkSameSettings(const Checkpoint& checkpoint, const std::map<std::string, std::string>& now) {

@@ -61,6 +61,8 @@ struct Checkpoint {
 Checkpoint readCheckpoint(const std::string& folder);
 
 // Throws cfd::ConfigError listing every setting that differs between the checkpoint and the case.
+// loop.time must be loop.step gas steps (a hand-edited or damaged loop.yaml would start the loop elsewhere)
+void checkLoopTime(const Checkpoint& checkpoint, double gas_step);
 void checkSameSettings(const Checkpoint& checkpoint, const std::map<std::string, std::string>& case_settings);
 
 }  // namespace parcelflow::coupling

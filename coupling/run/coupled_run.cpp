@@ -121,6 +121,7 @@ void CoupledRun::initialize() {
     // absolute: LIGGGHTS runs in the case folder, and the gas state is read after it started
     checkpoint = std::make_unique<Checkpoint>(readCheckpoint(fs::absolute(s.options.restart).string()));
     checkSameSettings(*checkpoint, s.settings);
+    checkLoopTime(*checkpoint, cs.time.gas_step);
   }
   applyEndTime(s.case_def.settings.time, s.options.end_time, checkpoint ? checkpoint->loop.time : 0.0);
   s.output = fs::absolute(s.options.output_folder.empty() ? fs::path(s.options.case_folder) / cs.output.folder

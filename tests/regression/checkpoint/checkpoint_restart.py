@@ -12,8 +12,9 @@
                   paths: a relative --restart once failed to open gas.h5 after LIGGGHTS entered the case folder). Only the pressure solve's partition differs
                   (block preconditioner of 1 vs 2 blocks, same tolerance 1e-8 relative): monitors agree to
                   1e-6 relative after N steps, set by that tolerance times the N steps' growth.
-  refusals:       a case whose drag law differs and a checkpoint with gas.h5 of another checkpoint stop with
-                  exit code 2 before any step, naming what differs.
+  refusals:       a case whose drag law differs, a checkpoint with gas.h5 of another checkpoint, a gas.h5 that
+                  is not HDF5 and a loop.yaml whose time is not its step x gas step stop with exit code 2
+                  before any step, naming what differs.
   averages:       monitors.average from 0.004 s: the averaged pressures of averages.csv equal the mean of the
                   per-step monitor rows after the start (the same quantity averaged independently; 1e-9, as
                   monitors.csv holds 10 digits), the
@@ -184,7 +185,17 @@ def refusals(parcelflow, launcher, work, case, b_out):
     mixed = os.path.join(work, "mixed")
     shutil.copytree(first, mixed)
     shutil.copy(os.path.join(second, "gas.h5"), os.path.join(mixed, "gas.h5"))
-    for folder, restart, expected in [(other, first, "coupling.drag"), (case, mixed, "checkpoint_id")]:
+    damaged_gas = os.path.join(work, "damaged_gas")  # used to end in an HDF5 exception, exit code 1
+    shutil.copytree(first, damaged_gas)
+    open(os.path.join(damaged_gas, "gas.h5"), "wb").write(os.urandom(5000))
+    edited_time = os.path.join(work, "edited_time")  # used to run on from a loop time of -1
+    shutil.copytree(first, edited_time)
+    loop = os.path.join(edited_time, "loop.yaml")
+    text = open(loop).read()
+    open(loop, "w").write(text.replace("  time: ", "  time: -1 #", 1))
+    for folder, restart, expected in [(other, first, "coupling.drag"), (case, mixed, "checkpoint_id"),
+                                      (case, damaged_gas, "gas.h5 = unreadable"),
+                                      (case, edited_time, "loop.time = -1")]:
         done = subprocess.run(launcher + [parcelflow, "run", folder, "--output", b_out, "--restart", restart],
                               capture_output=True, text=True)
         if done.returncode != 2 or expected not in done.stderr or "checkpoint" not in done.stderr:
