@@ -33,11 +33,9 @@ Hdf5Writer::~Hdf5Writer() {
 }
 
 void Hdf5Writer::close() {
-  int closed = H5Fclose(id_) >= 0, all_closed = 0;
+  const bool closed = H5Fclose(id_) >= 0;
   id_ = -1;
-  MPI_Allreduce(&closed, &all_closed, 1, MPI_INT, MPI_MIN, comm_);  // every rank throws, or none
-  check(all_closed != 0, "closing", partialPath(path_));
-  publishFile(path_, comm_);
+  publishClosedFile(path_, closed, comm_);  // every rank throws, or none
 }
 
 void Hdf5Writer::write(const std::string& name, const double* data, long totalRows, long offset, long rows,

@@ -17,9 +17,13 @@ namespace parcelflow::cfd {
 // An HDF5 file is written as PATH.partial and renamed to PATH once closed on every rank, so that a run
 // killed while writing (SIGKILL, a node failure) leaves no file under the real name that does not open.
 inline std::string partialPath(const std::string& path) { return path + ".partial"; }
-// Collective: rank 0 renames partialPath(path) to path; throws on every rank if that fails. (Inline: the
-// parcel writer's library uses it without the gas solver's.)
-inline void publishFile(const std::string& path, MPI_Comm comm) {
+// Collective, after each rank closed its handle of partialPath(path) (`closed_here`: whether that worked):
+// throws on every rank if any rank failed to close, else rank 0 renames partialPath(path) to path (throws on
+// every rank if that fails). (Inline: the parcel writer's library uses it without the gas solver's.)
+inline void publishClosedFile(const std::string& path, bool closed_here, MPI_Comm comm) {
+  int closed = closed_here ? 1 : 0, all_closed = 0;
+  MPI_Allreduce(&closed, &all_closed, 1, MPI_INT, MPI_MIN, comm);
+  if (!all_closed) throw std::runtime_error("HDF5: closing failed for " + partialPath(path));
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   int error = 0;

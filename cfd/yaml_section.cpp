@@ -1,9 +1,9 @@
 #include "yaml_section.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "config_error.hpp"
+#include "number_text.hpp"
 
 namespace parcelflow::cfd {
 
@@ -12,11 +12,6 @@ std::string joined(const std::vector<std::string>& words) {
   std::string out;
   for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
   return out;
-}
-std::string numberText(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
 }
 }  // namespace
 
@@ -30,10 +25,10 @@ bool Range::contains(double v) const {
 std::string Range::describe() const {
   const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
   if (hasLo && hasHi)
-    return std::string("a number in ") + (loOpen ? "(" : "[") + numberText(lo) + ", " +
-           numberText(hi) + (hiOpen ? ")" : "]");
-  if (hasLo) return std::string("a number ") + (loOpen ? "> " : ">= ") + numberText(lo);
-  if (hasHi) return std::string("a number ") + (hiOpen ? "< " : "<= ") + numberText(hi);
+    return std::string("a number in ") + (loOpen ? "(" : "[") + shortNumber(lo) + ", " +
+           shortNumber(hi) + (hiOpen ? ")" : "]");
+  if (hasLo) return std::string("a number ") + (loOpen ? "> " : ">= ") + shortNumber(lo);
+  if (hasHi) return std::string("a number ") + (hiOpen ? "< " : "<= ") + shortNumber(hi);
   return "a finite number";
 }
 

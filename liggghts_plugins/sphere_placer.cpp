@@ -72,26 +72,12 @@ bool SpherePlacer::candidate(double radius, Point& p)
   return inside_(p, radius) && !overlaps(p, radius);
 }
 
-bool SpherePlacer::place(double radius, int attempts, Point& centre)
-{
-  for (int k = 0; k < 3; ++k)
-    if (hi_[k] - lo_[k] < 2.0 * radius) return false;
-  for (int a = 0; a < attempts; ++a) {
-    Point p;
-    if (!candidate(radius, p)) continue;
-    centre = p;
-    add(p, radius);
-    return true;
-  }
-  return false;
-}
-
-bool SpherePlacer::place_lowest(double radius, int attempts, Point& centre)
+bool SpherePlacer::choose(double radius, int attempts, bool lowest, Point& centre)
 {
   for (int k = 0; k < 3; ++k)
     if (hi_[k] - lo_[k] < 2.0 * radius) return false;
   bool found = false;
-  for (int a = 0; a < attempts; ++a) {
+  for (int a = 0; a < attempts && (lowest || !found); ++a) {
     Point p;
     if (!candidate(radius, p) || (found && p[2] >= centre[2])) continue;
     centre = p;

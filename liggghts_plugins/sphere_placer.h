@@ -30,11 +30,12 @@ class SpherePlacer {
   // whether a sphere (centre, radius) overlaps a sphere added so far (touching is not overlapping)
   bool overlaps(const Point& centre, double radius) const;
   // Up to `attempts` candidates; on success writes the centre, adds the sphere and returns true.
-  bool place(double radius, int attempts, Point& centre);
+  bool place(double radius, int attempts, Point& centre) { return choose(radius, attempts, false, centre); }
   // Draws all `attempts` candidates and takes the free one lowest in z (the same on success otherwise).
-  bool place_lowest(double radius, int attempts, Point& centre);
+  bool place_lowest(double radius, int attempts, Point& centre) { return choose(radius, attempts, true, centre); }
 
  private:
+  bool choose(double radius, int attempts, bool lowest, Point& centre);
   bool candidate(double radius, Point& p);  // draws one; whether it is free
   std::array<long, 3> cell_of(const Point& p) const;
   static std::uint64_t key(const std::array<long, 3>& c);

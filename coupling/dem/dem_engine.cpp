@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "cfd/config_error.hpp"
+#include "cfd/number_text.hpp"
 #include "contact_time_check.h"
 #include "lammps.h"
 #include "liggghts_instance.h"
@@ -16,15 +17,11 @@
 
 namespace parcelflow::coupling {
 
+using cfd::exactNumber;
+
 namespace {
 
 const char* const kReservedVariables[] = {"dem_step", "restarting", "restart_file"};
-
-std::string exactNumber(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
 
 }  // namespace
 

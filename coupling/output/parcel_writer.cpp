@@ -139,10 +139,7 @@ void ParcelWriter::write(double time, const ParcelSnapshot& local) {
     std::vector<std::int64_t> vertices(n);
     for (long i = 0; i < n; ++i) vertices[i] = offset + i;
     writeRows(file, path, "connectivity", H5T_NATIVE_INT64, vertices.data(), total, offset, n, 1);
-    int closed = file.close() >= 0, all_closed = 0;
-    MPI_Allreduce(&closed, &all_closed, 1, MPI_INT, MPI_MIN, comm_);
-    if (!all_closed) throw std::runtime_error("HDF5: closing " + cfd::partialPath(path) + " failed");
-    cfd::publishFile(path, comm_);
+    cfd::publishClosedFile(path, file.close() >= 0, comm_);
   }
   times_.push_back(time);
   counts_.push_back(total);

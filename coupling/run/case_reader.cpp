@@ -1,12 +1,12 @@
 #include "case_reader.h"
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 
 #include "cfd/config_error.hpp"
+#include "cfd/number_text.hpp"
 #include "drag_law.hpp"
 #include "cfd/yaml_duplicate_keys.hpp"
 #include "cfd/yaml_section.hpp"
@@ -24,11 +24,6 @@ const std::vector<std::string> kCouplingTopLevelKeys = {"liggghts", "time", "cou
 constexpr double kMaxDemStepsPerGasStep = 1e6;
 constexpr double kMinGasFractionFloor = 0.01;
 
-std::string numberText(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 LiggghtsSettings readLiggghts(const YamlSection& s) {
   s.allowOnly({"script", "variables"});
@@ -52,10 +47,10 @@ TimeSettings readTime(const YamlSection& s) {
     s.fail("gas_step", "is " + std::to_string(ratio) + " DEM steps (time.dem_step = " + std::to_string(t.dem_step) +
                            "); it must be a whole number of DEM steps, at least 1");
   if (ratio > kMaxDemStepsPerGasStep)
-    s.fail("gas_step", "is " + numberText(ratio) + " DEM steps (time.dem_step = " + numberText(t.dem_step) +
+    s.fail("gas_step", "is " + cfd::shortNumber(ratio) + " DEM steps (time.dem_step = " + cfd::shortNumber(t.dem_step) +
                            "); allowed are at most 1e6 DEM steps per gas step");
   if (t.gas_step > t.end * (1.0 + 1e-9))
-    s.fail("gas_step", "is longer than time.end = " + numberText(t.end) + " s; allowed is gas_step <= end");
+    s.fail("gas_step", "is longer than time.end = " + cfd::shortNumber(t.end) + " s; allowed is gas_step <= end");
   return t;
 }
 
@@ -153,12 +148,12 @@ void checkFilteredDragAgainstGas(const CouplingSettings& coupling, const cfd::Ga
   const std::string law = std::string("coupling.drag: ") + RadlSundaresanDrag::typeName;
   const double density = coupling.filtered_drag.particle_density;
   if (!(density > gas.density))
-    throw ConfigError("coupling.filtered_drag.particle_density", numberText(density),
-                      "a number > gas.density = " + numberText(gas.density) + " (" + law +
+    throw ConfigError("coupling.filtered_drag.particle_density", cfd::shortNumber(density),
+                      "a number > gas.density = " + cfd::shortNumber(gas.density) + " (" + law +
                           " needs the terminal velocity of particles heavier than the gas)");
   if (!(gas.gravity.norm() > 0.0))
-    throw ConfigError("gas.gravity", "[" + numberText(gas.gravity[0]) + ", " + numberText(gas.gravity[1]) + ", " +
-                                         numberText(gas.gravity[2]) + "]",
+    throw ConfigError("gas.gravity", "[" + cfd::shortNumber(gas.gravity[0]) + ", " + cfd::shortNumber(gas.gravity[1]) + ", " +
+                                         cfd::shortNumber(gas.gravity[2]) + "]",
                       "a non-zero vector with " + law + " (its filter size is measured in v_t^2 / |g|)");
 }
 
@@ -207,9 +202,9 @@ CaseDefinition readCase(const std::string& case_folder) {
 void applyEndTime(TimeSettings& time, double end, double start) {
   const double value = end > 0.0 ? end : time.end;
   if (value < start + time.gas_step * (1.0 - 1e-9))
-    throw ConfigError(end > 0.0 ? "--end" : "time.end", numberText(value) + " s",
-                      "at least one gas step (time.gas_step = " + numberText(time.gas_step) + " s)" +
-                          (start > 0.0 ? " after the checkpoint's time " + numberText(start) + " s" : ""));
+    throw ConfigError(end > 0.0 ? "--end" : "time.end", cfd::shortNumber(value) + " s",
+                      "at least one gas step (time.gas_step = " + cfd::shortNumber(time.gas_step) + " s)" +
+                          (start > 0.0 ? " after the checkpoint's time " + cfd::shortNumber(start) + " s" : ""));
   time.end = value;
 }
 
