@@ -20,6 +20,7 @@
 #include "parcel_mesh_coupler.h"
 #include "parcel_writer.h"
 #include "plane_averages.h"
+#include "peak_memory.h"
 #include "progress_line.h"
 #include "run_counters.h"
 #include "run_warnings.h"
@@ -378,6 +379,7 @@ void CoupledRun::finalize() {
   if (s.averages) s.averages->write(s.loop.time);
   const RunCounters total = s.counters.totals(MPI_COMM_WORLD);
   const long lost = s.loop.initial_parcels - s.dem->parcels().globalCount();
+  const PeakMemory memory = peakMemory(MPI_COMM_WORLD);
   if (s.rank == 0) {
     std::printf("%s\n", formatProgress(s.progress).c_str());
     std::printf("parcelflow: done: %ld gas steps, %.3f s simulated in %.1f s wall; lowest gas fraction %.4f; "
@@ -394,6 +396,8 @@ void CoupledRun::finalize() {
                 "steps, %ld linear solves stopped at max_iterations\n",
                 s.loop.step > 0 ? static_cast<double>(total.pressure_iterations) / s.loop.step : 0.0,
                 total.preconditioner_builds, s.loop.step, total.unconverged_solves);
+    std::printf("parcelflow: peak memory per rank: largest %.1f MB (rank %d), smallest %.1f MB\n",
+                memory.largest_mb, memory.largest_rank, memory.smallest_mb);
     if (s.averages)
       std::printf("parcelflow: time averages over %.4g s: bed height %.4g m (averages.csv, averages.xdmf)\n",
                   s.averages->averagedTime(), s.averages->bedHeight());
