@@ -153,7 +153,8 @@ void checkScriptVariables(const std::string& folder, const std::string& script,
         throw cfd::ConfigError("liggghts.variables." + name, value,
                                "a whole number written in digits, at most " + std::to_string(use.largest) + ": " +
                                    where(use.place) + " gives it to `" + use.keyword +
-                                   "`, which LIGGGHTS reads with atoi or atoll: they take the leading digits and drop the rest");
+                                   "`, which LIGGGHTS reads with atoi or atoll: they take the leading digits and "
+                                   "drop the rest");
   const std::set<std::string> outside(passed.begin(), passed.end());
   // A jump back to an earlier label may run a definition before a use that precedes it in the file.
   bool backward_jump = false;

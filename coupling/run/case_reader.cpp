@@ -152,8 +152,9 @@ void checkFilteredDragAgainstGas(const CouplingSettings& coupling, const cfd::Ga
                       "a number > gas.density = " + cfd::shortNumber(gas.density) + " (" + law +
                           " needs the terminal velocity of particles heavier than the gas)");
   if (!(gas.gravity.norm() > 0.0))
-    throw ConfigError("gas.gravity", "[" + cfd::shortNumber(gas.gravity[0]) + ", " + cfd::shortNumber(gas.gravity[1]) + ", " +
-                                         cfd::shortNumber(gas.gravity[2]) + "]",
+    throw ConfigError("gas.gravity",
+                      "[" + cfd::shortNumber(gas.gravity[0]) + ", " + cfd::shortNumber(gas.gravity[1]) + ", " +
+                          cfd::shortNumber(gas.gravity[2]) + "]",
                       "a non-zero vector with " + law + " (its filter size is measured in v_t^2 / |g|)");
 }
 

@@ -17,6 +17,8 @@
 
 namespace parcelflow::coupling {
 
+using cfd::exactNumber;
+
 namespace fs = std::filesystem;
 using cfd::ConfigError;
 
@@ -106,27 +108,28 @@ void commitCheckpoint(const CheckpointDraft& draft, const LoopState& loop,
     y << YAML::Key << "dem_restart" << YAML::Value << YAML::BeginMap << YAML::Key << "bytes" << YAML::Value
       << dem_size << YAML::Key << "fnv1a64" << YAML::Value << dem_hash << YAML::EndMap;
     y << YAML::Key << "loop" << YAML::Value << YAML::BeginMap;
-    y << YAML::Key << "step" << YAML::Value << loop.step << YAML::Key << "time" << YAML::Value << cfd::exactNumber(loop.time);
+    y << YAML::Key << "step" << YAML::Value << loop.step;
+    y << YAML::Key << "time" << YAML::Value << exactNumber(loop.time);
     for (const auto& [key, value] : std::vector<std::pair<const char*, double>>{
              {"next_monitor", loop.next_monitor}, {"next_fields", loop.next_fields},
              {"next_parcels", loop.next_parcels}, {"next_checkpoint", loop.next_checkpoint}})
-      y << YAML::Key << key << YAML::Value << cfd::exactNumber(value);
+      y << YAML::Key << key << YAML::Value << exactNumber(value);
     y << YAML::Key << "dem_step" << YAML::Value << loop.dem_step << YAML::Key << "initial_parcels" << YAML::Value
       << loop.initial_parcels << YAML::Key << "parcels" << YAML::Value << loop.parcels << YAML::Key
       << "monitor_bytes" << YAML::Value << loop.monitor_bytes << YAML::Key << "parcel_snapshots" << YAML::Value
       << loop.parcel_snapshots;
     y << YAML::Key << "field_times" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-    for (double t : loop.field_times) y << cfd::exactNumber(t);
+    for (double t : loop.field_times) y << exactNumber(t);
     y << YAML::EndSeq;
     RunCounters counters = loop.counters;
     y << YAML::Key << "counters" << YAML::Value << YAML::BeginMap;
     for (const auto& [name, value] : counters.perRank()) y << YAML::Key << name << YAML::Value << *value;
     for (const auto& [name, value] : counters.global()) y << YAML::Key << name << YAML::Value << *value;
-    y << YAML::Key << "min_gas_fraction" << YAML::Value << cfd::exactNumber(counters.min_gas_fraction) << YAML::EndMap;
+    y << YAML::Key << "min_gas_fraction" << YAML::Value << exactNumber(counters.min_gas_fraction) << YAML::EndMap;
     y << YAML::Key << "averages" << YAML::Value << YAML::BeginMap;
     for (const auto& [name, values] : loop.averages) {
       y << YAML::Key << name << YAML::Value << YAML::Flow << YAML::BeginSeq;
-      for (double v : values) y << cfd::exactNumber(v);
+      for (double v : values) y << exactNumber(v);
       y << YAML::EndSeq;
     }
     y << YAML::EndMap << YAML::EndMap;
@@ -209,9 +212,9 @@ void checkLoopTime(const Checkpoint& checkpoint, double gas_step) {
   const LoopState& l = checkpoint.loop;
   const double expected = static_cast<double>(l.step) * gas_step;  // the loop's own time: step * gas step
   if (l.step < 0 || !(std::abs(l.time - expected) <= 1e-9 * std::max(expected, gas_step)))
-    throw ConfigError(checkpoint.paths.loop + ": loop.time", cfd::exactNumber(l.time),
-                      "loop.step x time.gas_step = " + cfd::exactNumber(expected) + " s (step " + std::to_string(l.step) +
-                          "), as parcelflow writes a checkpoint");
+    throw ConfigError(checkpoint.paths.loop + ": loop.time", exactNumber(l.time),
+                      "loop.step x time.gas_step = " + exactNumber(expected) + " s (step " +
+                          std::to_string(l.step) + "), as parcelflow writes a checkpoint");
 }
 
 void checkSameSettings(const Checkpoint& checkpoint, const std::map<std::string, std::string>& now) {

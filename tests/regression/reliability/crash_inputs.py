@@ -1,5 +1,6 @@
 """Inputs that used to crash (uncaught exceptions, segfaults, aborts) now stop with a message naming the key or
-file, the value and what is allowed: exit code 2 for user errors, before any work (also where LIGGGHTS stops on an error one rank found); a non-finite parcel value
+file, the value and what is allowed: exit code 2 for user errors, before any work (also where LIGGGHTS stops on
+an error one rank found); a non-finite parcel value
 found during the run stops all ranks with the parcel's id, the value and the time (exit code != 0)."""
 import os
 
@@ -79,7 +80,8 @@ def error_found_by_one_rank(runs):
     case = runs.case(script=wrong_diameter)
     for ranks in (1, 2):
         expect(f"a sphere refused by fix parcel, {ranks} rank(s)", runs.run(case, ranks=ranks), 2, "ERROR on proc",
-               "'mode constant_diameter diameter' is 0.05", "liggghts.script = column.in stopped with the LIGGGHTS ERROR",
+               "'mode constant_diameter diameter' is 0.05",
+               "liggghts.script = column.in stopped with the LIGGGHTS ERROR",
                "nparcels = '300'")
 
 
@@ -90,6 +92,6 @@ def infinite_parcel_velocity(runs):
 
 
 if __name__ == "__main__":
-    main([unwritable_output, case_yaml_is_a_folder, script_that_is_a_folder_or_empty, end_below_one_gas_step, values_the_solver_cannot_honour,
-          undefined_script_variable, variable_used_before_its_definition, error_found_by_one_rank,
-          infinite_parcel_velocity])
+    main([unwritable_output, case_yaml_is_a_folder, script_that_is_a_folder_or_empty, end_below_one_gas_step,
+          values_the_solver_cannot_honour, undefined_script_variable, variable_used_before_its_definition,
+          error_found_by_one_rank, infinite_parcel_velocity])
