@@ -382,7 +382,7 @@ void CoupledRun::finalize() {
   const PeakMemory memory = peakMemory(MPI_COMM_WORLD);
   if (s.rank == 0) {
     std::printf("%s\n", formatProgress(s.progress).c_str());
-    std::printf("parcelflow: done: %ld gas steps, %.3f s simulated in %.1f s wall; lowest gas fraction %.4f; "
+    std::printf("parcelflow: done: %ld gas steps, %.6g s simulated in %.1f s wall; lowest gas fraction %.4f; "
                 "gas-fraction floor %.3f hit in %ld cell-steps, drag at the floor for %ld parcel-steps, "
                 "drag input invalid for %ld and a_g above 1 for %ld parcel-steps, filtered-drag correction "
                 "bounded for %ld; "
@@ -398,9 +398,13 @@ void CoupledRun::finalize() {
                 total.preconditioner_builds, s.loop.step, total.unconverged_solves);
     std::printf("parcelflow: peak memory per rank: largest %.1f MB (rank %d), smallest %.1f MB\n",
                 memory.largest_mb, memory.largest_rank, memory.smallest_mb);
-    if (s.averages)
+    if (s.averages && s.averages->averagedTime() > 0.0)
       std::printf("parcelflow: time averages over %.4g s: bed height %.4g m (averages.csv, averages.xdmf)\n",
                   s.averages->averagedTime(), s.averages->bedHeight());
+    else if (s.averages)
+      std::printf("parcelflow: no time averages: the run ended at t = %.4g s, before monitors.average.start = "
+                  "%.4g s (averages.csv holds no values)\n",
+                  s.loop.time, s.case_def.settings.monitors.average_start);
     std::printf("parcelflow: monitors in %s, fields in %s (open fields.xdmf in ParaView)\n",
                 s.monitors->csv().path().c_str(), s.output.c_str());
   }
