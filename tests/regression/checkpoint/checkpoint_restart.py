@@ -205,15 +205,15 @@ def refusals(parcelflow, launcher, work, case, b_out):
         print(f"[measured] refused: {message[0][:200] if message else '(no parcelflow message)'}")
 
 
-def stop_with_signal(parcelflow, launcher, work, to_one_rank):
-    case = copy_case(os.path.join(CASES, "fluidized_column"), os.path.join(work, "signal"), edit)
-    out = os.path.join(work, "signal", "out")
+def signalled_run(parcelflow, launcher, case, out, to_one_rank, ready):
+    """Starts a run of `case`, waits until ready() (at most 300 s), sends SIGTERM to mpirun or to one rank;
+    (job, stdout, stderr, seconds from the signal to the end)."""
     job = subprocess.Popen(launcher + [parcelflow, "run", case, "--output", out, "--end", "5"],
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    csv = os.path.join(out, "monitors.csv")
     deadline = time.time() + 300
-    while time.time() < deadline and (not os.path.exists(csv) or sum(1 for _ in open(csv)) < 30):
-        time.sleep(0.5)
+    while time.time() < deadline and not ready():
+        time.sleep(0.2)
+    sent = time.time()
     if to_one_rank:
         ranks = subprocess.run(["pgrep", "-f", "-P", str(job.pid), "parcelflow"], capture_output=True,
                                text=True).stdout.split()
@@ -223,6 +223,15 @@ def stop_with_signal(parcelflow, launcher, work, to_one_rank):
     else:
         job.send_signal(signal.SIGTERM)
     stdout, stderr = job.communicate(timeout=300)
+    return job, stdout, stderr, time.time() - sent
+
+
+def stop_with_signal(parcelflow, launcher, work, to_one_rank):
+    case = copy_case(os.path.join(CASES, "fluidized_column"), os.path.join(work, "signal"), edit)
+    out = os.path.join(work, "signal", "out")
+    csv = os.path.join(out, "monitors.csv")
+    job, stdout, stderr, _ = signalled_run(parcelflow, launcher, case, out, to_one_rank,
+                                           lambda: os.path.exists(csv) and sum(1 for _ in open(csv)) >= 30)
     if job.returncode == 0 or "--restart" not in stderr:
         fail(f"SIGTERM: exit {job.returncode}, expected non-zero and how to continue:\n{stdout[-1500:]}{stderr[-1500:]}")
     checkpoint = stderr.split("--restart")[-1].split()[0]
@@ -250,23 +259,9 @@ def stop_during_start_up(parcelflow, launcher, work, to_one_rank):
     case = copy_case(os.path.join(CASES, "fluidized_column"), folder, edit)
     before = sorted(os.listdir(case))
     out = os.path.join(folder, "out")
-    job = subprocess.Popen(launcher + [parcelflow, "run", case, "--output", out, "--end", "5"],
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     log = os.path.join(out, "log.liggghts")
-    deadline = time.time() + 300
-    while time.time() < deadline and (not os.path.exists(log) or "Step" not in open(log).read()):
-        time.sleep(0.2)
-    sent = time.time()
-    if to_one_rank:
-        ranks = subprocess.run(["pgrep", "-f", "-P", str(job.pid), "parcelflow"], capture_output=True,
-                               text=True).stdout.split()
-        if not ranks:
-            fail("no rank process found under mpirun")
-        os.kill(int(ranks[-1]), signal.SIGTERM)
-    else:
-        job.send_signal(signal.SIGTERM)
-    stdout, stderr = job.communicate(timeout=300)
-    took = time.time() - sent
+    job, stdout, stderr, took = signalled_run(parcelflow, launcher, case, out, to_one_rank,
+                                              lambda: os.path.exists(log) and "Step" in open(log).read())
     words = "stopped by a signal before the coupled run started"
     if job.returncode == 0 or words not in stderr or "monitors.csv" in os.listdir(out) or took > 30:
         fail(f"SIGTERM during the script: exit {job.returncode} after {took:.1f} s, expected non-zero, '{words}' "
