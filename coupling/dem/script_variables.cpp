@@ -112,9 +112,9 @@ void scanLine(const std::string& folder, const std::string& file, const std::str
     const auto at = static_cast<std::size_t>(m->position());
     s.used.push_back({name, here, branch && quoted(line, at)});
     const std::size_t after = at + static_cast<std::size_t>(m->length());
-    std::smatch keyword;
-    const std::string before = line.substr(0, at);
     if (after != line.size() && !std::isspace(static_cast<unsigned char>(line[after]))) continue;
+    const std::string before = line.substr(0, at);
+    std::smatch keyword;
     if (std::regex_search(line, kInsertFix) && std::regex_search(before, keyword, kInsertCount))
       s.whole_numbers.push_back({name, keyword[1], here, INT_MAX});
     else if (std::regex_search(before, kRunSteps) ||

@@ -1,5 +1,5 @@
 // The largest resident memory a rank has used so far (getrusage's ru_maxrss), over the ranks: what a user
-// sizes a machine by. Collective: one reduction of two values.
+// sizes a machine by. Collective: two reductions of one (value, rank) pair.
 #pragma once
 
 #include <mpi.h>

@@ -1,9 +1,8 @@
 """Inputs that used to run on silently or mislead now stop with exit code 2 naming the key, the value and what
 is allowed (a duplicated key in case.yaml with both lines, gas_step > end, a gas step of 2^32 DEM steps, a
 liggghts.variables entry that parcelflow sets itself, a count that LIGGGHTS would read as its leading digits),
-and a fresh run in a folder that holds an earlier run's
-output says so at the start and removes that run's snapshots, XDMF indexes and checkpoints, so that every
-snapshot file in the folder is one the new XDMF lists. A continued run (--restart) leaves them in place."""
+and a fresh run in a folder that holds an earlier run's output says so at the start and removes that run's
+snapshots, XDMF indexes and checkpoints, so that every snapshot file in the folder is one the new XDMF lists. A continued run (--restart) leaves them in place."""
 import glob
 import os
 import re
