@@ -256,7 +256,13 @@ def stop_during_start_up(parcelflow, launcher, work, to_one_rank):
     default action: exit code 1 and no word. Now every rank that gets it says so and ends at once."""
     folder = os.path.join(work, "start_up")
     shutil.rmtree(folder, ignore_errors=True)
-    case = copy_case(os.path.join(CASES, "fluidized_column"), folder, edit)
+    def long_settling(case):  # so that the signal lands inside the script on an idle machine too
+        path = os.path.join(case, "column.in")
+        text = open(path).read()
+        if "run             12000\n" not in text:
+            fail("column.in has no 'run 12000' settling to lengthen")
+        open(path, "w").write(text.replace("run             12000\n", "run             400000\n"))
+    case = copy_case(os.path.join(CASES, "fluidized_column"), folder, edit, long_settling)
     before = sorted(os.listdir(case))
     out = os.path.join(folder, "out")
     log = os.path.join(out, "log.liggghts")
