@@ -53,8 +53,9 @@ def main():
             settings.update(yaml.safe_load(open(os.path.join(case, "case.yaml"))))
             checkpoint = os.path.abspath(args.checkpoint)
             args.establish = float(yaml.safe_load(open(os.path.join(checkpoint, "loop.yaml")))["loop"]["time"])
-            os.makedirs(out)  # a continued run appends to the monitors.csv of the run that wrote the checkpoint
-            shutil.copy(os.path.join(checkpoint, "..", "..", "monitors.csv"), out)
+            # a continued run appends to the series of the run that wrote the checkpoint (monitors.csv, the
+            # parcel and field files): its output folder without the checkpoints
+            shutil.copytree(os.path.join(checkpoint, "..", ".."), out, ignore=shutil.ignore_patterns("checkpoints"))
         else:
             case = copy_case(source, tmp, edit)
             run(launch + [args.parcelflow, "run", case, "--output", out, "--end", repr(args.establish)], tmp)
