@@ -16,6 +16,7 @@
 #include "contact_time_check.h"
 #include "coupled_run.h"
 #include "liggghts_instance.h"
+#include "stop_signal.h"
 #include "version.h"
 
 namespace pc = parcelflow::coupling;
@@ -63,16 +64,20 @@ int runCase(const pc::CommandLine& cl) {
     }
     run.finalize();
   } catch (const parcelflow::cfd::ConfigError& e) {
+    pc::silenceStartUpSignalMessage();
     if (rank == 0) std::cerr << "parcelflow: error in case '" << cl.case_folder << "': " << e.what() << "\n";
     return 2;
   } catch (const pc::DivergedError& e) {
+    pc::silenceStartUpSignalMessage();
     if (rank == 0) std::cerr << "parcelflow: error: " << e.what() << "\n";
     return 3;
   } catch (const parcelflow::cfd::InternalError& e) {
+    pc::silenceStartUpSignalMessage();
     std::cerr << "parcelflow: rank " << rank << ": " << e.what()
               << "\nparcelflow: this is a bug in parcelflow, not in your case; please report it with the case\n";
     MPI_Abort(MPI_COMM_WORLD, 70);
   } catch (const std::exception& e) {
+    pc::silenceStartUpSignalMessage();
     std::cerr << "parcelflow: rank " << rank << ": " << e.what() << "\n";
     MPI_Abort(MPI_COMM_WORLD, 1);
   }

@@ -236,4 +236,27 @@ void checkSameSettings(const Checkpoint& checkpoint, const std::map<std::string,
                       differences);
 }
 
+void checkOutputSeries(const Checkpoint& checkpoint, const std::string& output_folder) {
+  const std::string allowed = "the file checkpoint " + checkpoint.id +
+                              "'s run wrote there: continue in that run's output folder (output.folder or --output)";
+  const fs::path folder(output_folder);
+  const fs::path monitors = folder / "monitors.csv";
+  if (!fs::is_regular_file(monitors)) throw ConfigError(monitors.string(), "missing", allowed);
+  if (static_cast<long>(fs::file_size(monitors)) < checkpoint.loop.monitor_bytes)
+    throw ConfigError(monitors.string(), std::to_string(fs::file_size(monitors)) + " bytes",
+                      "at least the " + std::to_string(checkpoint.loop.monitor_bytes) +
+                          " bytes written at checkpoint " + checkpoint.id);
+  auto requireSeries = [&](const std::string& name, std::size_t snapshots) {
+    for (std::size_t i = 0; i < snapshots; ++i) {
+      char file[64];
+      std::snprintf(file, sizeof file, "%s_%06zu.h5", name.c_str(), i);
+      if (!fs::is_regular_file(folder / file)) throw ConfigError((folder / file).string(), "missing", allowed);
+    }
+  };
+  requireSeries("parcels", static_cast<std::size_t>(checkpoint.loop.parcel_snapshots));
+  requireSeries("fields", checkpoint.loop.field_times.size());
+  const auto averages = checkpoint.loop.averages.find("field_times");
+  if (averages != checkpoint.loop.averages.end()) requireSeries("averages", averages->second.size());
+}
+
 }  // namespace parcelflow::coupling

@@ -64,5 +64,9 @@ Checkpoint readCheckpoint(const std::string& folder);
 // loop.time must be loop.step gas steps (a hand-edited or damaged loop.yaml would start the loop elsewhere)
 void checkLoopTime(const Checkpoint& checkpoint, double gas_step);
 void checkSameSettings(const Checkpoint& checkpoint, const std::map<std::string, std::string>& case_settings);
+// The output folder a restart continues must hold the series the checkpoint's run wrote (monitors.csv up to
+// the checkpoint, every parcel, field and average snapshot before it); throws cfd::ConfigError naming the
+// first file that is missing, before LIGGGHTS starts.
+void checkOutputSeries(const Checkpoint& checkpoint, const std::string& output_folder);
 
 }  // namespace parcelflow::coupling

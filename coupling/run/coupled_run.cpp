@@ -127,6 +127,7 @@ void CoupledRun::initialize() {
   applyEndTime(s.case_def.settings.time, s.options.end_time, checkpoint ? checkpoint->loop.time : 0.0);
   s.output = fs::absolute(s.options.output_folder.empty() ? fs::path(s.options.case_folder) / cs.output.folder
                                                           : fs::path(s.options.output_folder));
+  if (checkpoint) checkOutputSeries(*checkpoint, s.output.string());
   // A continued run keeps the earlier runs' LIGGGHTS logs.
   const std::string log = checkpoint ? "log.liggghts.from_step_" + std::to_string(checkpoint->loop.step) : "log.liggghts";
   prepareOutputFolder(s.output.string(), s.options.output_folder.empty() ? "output.folder" : "--output",
@@ -153,6 +154,8 @@ void CoupledRun::initialize() {
   TransferKernelOptions kernel_options;
   kernel_options.gaussianSharpness = cs.coupling.kernel.sharpness;
   kernel_options.gaussianRadius = cs.coupling.kernel.radius;
+  kernel_options.gaussianIsotropic = cs.coupling.kernel.length_scale == "cell_volume";
+  for (int d = 0; d < 3; ++d) kernel_options.gaussianSpacing[d] = grid.spacing[d];
   DragLawContext drag_context;  // per-case constants of the filtered law (the others ignore them)
   drag_context.filterSize = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
   drag_context.gravity = s.case_def.gas.gas.gravity.norm();

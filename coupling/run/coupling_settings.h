@@ -26,6 +26,9 @@ struct KernelSettings {
   std::string type = "gaussian";  // gaussian | centroid
   double sharpness = 1.0;         // a in exp(-a |dx|^2 / h^2) (paper eq. 8): larger is narrower
   int radius = 2;                 // stencil half-width in cells
+  // h: "cell_volume" (the cube root of the cell volume: paper eq. 8's one length scale of the cell) or
+  // "cell_axes" (the cell's length along each axis: on tall cells it smooths vertically over more metres)
+  std::string length_scale = "cell_volume";
 };
 
 // Limits beyond which a run counts as diverged (run/blowup_guard.h); the defaults are far above what the

@@ -14,7 +14,7 @@ volatile std::sig_atomic_t received = 0;
 
 void raiseFlag(int signal) { received = signal; }
 
-char start_up_message[256];
+char start_up_message[512];
 int start_up_message_length = 0;
 
 // async-signal-safe: write(2) and _exit(2) only
@@ -38,13 +38,16 @@ void installStartUpSignalHandlers(int rank) {
   const int n = std::snprintf(start_up_message, sizeof start_up_message,
                               "parcelflow: rank %d: stopped by a signal before the coupled run started (while the "
                               "case's LIGGGHTS script or the set-up ran): no checkpoint exists yet; run again to "
-                              "start over\n",
+                              "start over (mpirun also stops the other ranks this way when one rank fails: then "
+                              "that rank's message says why)\n",
                               rank);
   start_up_message_length = n > 0 && n < static_cast<int>(sizeof start_up_message) ? n : 0;
   installHandler(stopDuringStartUp);
 }
 
 void installStopSignalHandlers() { installHandler(raiseFlag); }
+
+void silenceStartUpSignalMessage() { start_up_message_length = 0; }
 
 int stopRequested(MPI_Comm comm) {
   int local = received, any = 0;

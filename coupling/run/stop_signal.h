@@ -12,6 +12,9 @@ namespace parcelflow::coupling {
 // ends the others). Without this, the default action ended the job with code 1 and no word.
 void installStartUpSignalHandlers(int rank);
 void installStopSignalHandlers();
+// Once this rank has reported why the run ends, a signal during start-up (mpirun stopping the ranks after one
+// of them exited) ends it without the start-up line, which would point away from the reason.
+void silenceStartUpSignalMessage();
 // The signal any rank got (0: none). Collective: one all-reduce of one int.
 int stopRequested(MPI_Comm comm);
 

@@ -7,14 +7,30 @@
 
 namespace parcelflow::coupling {
 
-GaussianKernel::GaussianKernel(double sharpness, int radius)
-    : a_(sharpness), r_(radius), expMinus2a_(std::exp(-2.0 * sharpness)) {
+GaussianKernel::GaussianKernel(double sharpness, int radius) : a_(sharpness), r_(radius) {
   // The case reader has checked both (coupling.kernel): a failure here is a bug.
   PARCELFLOW_ASSERT(sharpness > 0.0 && std::isfinite(sharpness),
                     "gaussian kernel: sharpness a must be > 0, got " + std::to_string(sharpness));
   PARCELFLOW_ASSERT(radius >= 0 && radius <= maxRadius, "gaussian kernel: stencil radius must be in [0, " +
                                                             std::to_string(maxRadius) + "] cells, got " +
                                                             std::to_string(radius));
+  for (int d = 0; d < 3; ++d) {
+    axisA_[d] = sharpness;
+    expMinus2a_[d] = std::exp(-2.0 * sharpness);
+  }
+}
+
+GaussianKernel::GaussianKernel(double sharpness, int radius, const double (&spacing)[3])
+    : GaussianKernel(sharpness, radius) {
+  PARCELFLOW_ASSERT(spacing[0] > 0.0 && spacing[1] > 0.0 && spacing[2] > 0.0,
+                    "gaussian kernel: cell lengths must be > 0");
+  const double h = std::cbrt(spacing[0] * spacing[1] * spacing[2]);
+  for (int d = 0; d < 3; ++d) {
+    // exactly a on cubic cells, whatever the rounding of the cube root
+    const double ratio = spacing[0] == spacing[1] && spacing[1] == spacing[2] ? 1.0 : spacing[d] / h;
+    axisA_[d] = sharpness * ratio * ratio;
+    expMinus2a_[d] = std::exp(-2.0 * axisA_[d]);
+  }
 }
 
 double GaussianKernel::retainedMassFraction1D(double sharpness, int radius, double offset) {

@@ -9,7 +9,10 @@ namespace parcelflow::coupling {
 std::vector<std::string> transferKernelNames() { return {GaussianKernel::typeName, CentroidKernel::typeName}; }
 
 TransferKernel makeTransferKernel(const std::string& name, const TransferKernelOptions& options) {
-  if (name == GaussianKernel::typeName) return GaussianKernel(options.gaussianSharpness, options.gaussianRadius);
+  if (name == GaussianKernel::typeName)
+    return options.gaussianIsotropic
+               ? GaussianKernel(options.gaussianSharpness, options.gaussianRadius, options.gaussianSpacing)
+               : GaussianKernel(options.gaussianSharpness, options.gaussianRadius);
   if (name == CentroidKernel::typeName) return CentroidKernel(options.centroidSearchRadius);
   std::string valid;
   for (const std::string& n : transferKernelNames()) valid += (valid.empty() ? "" : ", ") + n;

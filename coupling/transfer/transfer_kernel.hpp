@@ -17,6 +17,9 @@ using TransferKernel = std::variant<GaussianKernel, CentroidKernel>;
 struct TransferKernelOptions {
   double gaussianSharpness = 1.0;  // a in exp(-a |dx|^2 / h^2)
   int gaussianRadius = 2;          // stencil +-R cells per axis
+  // h = the cube root of the cell volume (cells of gaussianSpacing) instead of the cell length per axis
+  bool gaussianIsotropic = true;
+  double gaussianSpacing[3] = {1.0, 1.0, 1.0};
   int centroidSearchRadius = 1;    // fallback search for the centroid kernel
 };
 

@@ -36,6 +36,17 @@ def loop_timing(stdout):
     return wall, progress.split("parcel-steps/s")[-1].strip()
 
 
+def replace_in_file(path, replacements):
+    """Replaces each (old, new) text of `replacements` in file `path`; a missing old text ends the test with
+    FAIL (the file changed and the test must follow)."""
+    text = open(path).read()
+    for old, new in replacements:
+        if old not in text:
+            fail(f"{path} no longer contains {old!r}: update the test")
+        text = text.replace(old, new)
+    open(path, "w").write(text)
+
+
 def copy_case(source, work, edit, prepare=lambda case: None):
     """Copies case folder `source` into work/case, applies edit(case_yaml_dict) and prepare(case_folder)."""
     case = os.path.join(work, "case")

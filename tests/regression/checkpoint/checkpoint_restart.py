@@ -13,8 +13,9 @@
                   (block preconditioner of 1 vs 2 blocks, same tolerance 1e-8 relative): monitors agree to
                   1e-6 relative after N steps, set by that tolerance times the N steps' growth.
   refusals:       a case whose drag law differs, a checkpoint with gas.h5 of another checkpoint, a gas.h5 that
-                  is not HDF5 and a loop.yaml whose time is not its step x gas step stop with exit code 2
-                  before any step, naming what differs.
+                  is not HDF5, a loop.yaml whose time is not its step x gas step and an output folder without
+                  the parcel series the checkpoint continues stop with exit code 2 before any step, naming
+                  what differs.
   averages:       monitors.average from 0.004 s: the averaged pressures of averages.csv equal the mean of the
                   per-step monitor rows after the start (the same quantity averaged independently; 1e-9, as
                   monitors.csv holds 10 digits), the
@@ -40,7 +41,7 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, copy_case, fail, run  # noqa: E402
+from parcelflow_runs import CASES, copy_case, fail, replace_in_file, run  # noqa: E402
 
 N = 50
 GAS_STEP = 2.0e-4
@@ -193,10 +194,15 @@ def refusals(parcelflow, launcher, work, case, b_out):
     loop = os.path.join(edited_time, "loop.yaml")
     text = open(loop).read()
     open(loop, "w").write(text.replace("  time: ", "  time: -1 #", 1))
-    for folder, restart, expected in [(other, first, "coupling.drag"), (case, mixed, "checkpoint_id"),
-                                      (case, damaged_gas, "gas.h5 = unreadable"),
-                                      (case, edited_time, "loop.time = -1")]:
-        done = subprocess.run(launcher + [parcelflow, "run", folder, "--output", b_out, "--restart", restart],
+    # an output folder without the parcel series it continues: used to stop after LIGGGHTS started, exit code 1
+    no_parcels = os.path.join(work, "no_parcels")
+    shutil.copytree(b_out, no_parcels, ignore=shutil.ignore_patterns("checkpoints"))
+    os.remove(os.path.join(no_parcels, "parcels_000000.h5"))
+    for folder, out, restart, expected in [(other, b_out, first, "coupling.drag"), (case, b_out, mixed, "checkpoint_id"),
+                                           (case, b_out, damaged_gas, "gas.h5 = unreadable"),
+                                           (case, b_out, edited_time, "loop.time = -1"),
+                                           (case, no_parcels, first, "parcels_000000.h5 = missing")]:
+        done = subprocess.run(launcher + [parcelflow, "run", folder, "--output", out, "--restart", restart],
                               capture_output=True, text=True)
         if done.returncode != 2 or expected not in done.stderr or "checkpoint" not in done.stderr:
             fail(f"restart from {restart} of {folder}: exit {done.returncode}, expected 2 naming {expected}:\n"
@@ -257,11 +263,7 @@ def stop_during_start_up(parcelflow, launcher, work, to_one_rank):
     folder = os.path.join(work, "start_up")
     shutil.rmtree(folder, ignore_errors=True)
     def long_settling(case):  # so that the signal lands inside the script on an idle machine too
-        path = os.path.join(case, "column.in")
-        text = open(path).read()
-        if "run             12000\n" not in text:
-            fail("column.in has no 'run 12000' settling to lengthen")
-        open(path, "w").write(text.replace("run             12000\n", "run             400000\n"))
+        replace_in_file(os.path.join(case, "column.in"), [("run             12000\n", "run             400000\n")])
     case = copy_case(os.path.join(CASES, "fluidized_column"), folder, edit, long_settling)
     before = sorted(os.listdir(case))
     out = os.path.join(folder, "out")

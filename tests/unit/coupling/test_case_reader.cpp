@@ -38,6 +38,7 @@ TEST(CaseReader, ReadsValuesAndDefaults) {
   EXPECT_EQ(s.time.demStepsPerGasStep(), 10);
   EXPECT_EQ(s.coupling.drag, "WenYu");
   EXPECT_EQ(s.coupling.kernel.type, "gaussian");
+  EXPECT_EQ(s.coupling.kernel.length_scale, "cell_volume");
   EXPECT_FALSE(s.monitors.has_bed_pressure_drop);
 }
 
@@ -45,6 +46,8 @@ TEST(CaseReader, ErrorsNameKeyValueAndAllowed) {
   expectMentions(errorOf("colling: {drag: WenYu}\n"), {"colling", "coupling"});
   expectMentions(errorOf("coupling: {drag: Stokes}\n"), {"coupling.drag", "Stokes", "WenYu", "Gidaspow"});
   expectMentions(errorOf("coupling: {kernel: {type: gaussian, radius: 9}}\n"), {"coupling.kernel.radius", "9"});
+  expectMentions(errorOf("coupling: {kernel: {type: gaussian, length_scale: cube}}\n"),
+                 {"coupling.kernel.length_scale", "cube", "cell_axes", "cell_volume"});
   expectMentions(errorOf("coupling: {gas_fraction_floor: 1.5}\n"), {"coupling.gas_fraction_floor", "1.5"});
   expectMentions(errorOf("monitors: {bed_pressure_drop: [0.05, 0.01]}\n"), {"monitors.bed_pressure_drop", "z_low < z_high"});
   expectMentions(errorOf("output: {monitor_interval: -1}\n"), {"output.monitor_interval", "-1"});

@@ -138,6 +138,41 @@ TEST(KernelWeights, GaussianOffCentreUsesCellUnitsPerAxis) {
   }
 }
 
+TEST(KernelWeights, GaussianWithTheCellVolumeLengthIsIsotropicInSpace) {
+  // h = (hx hy hz)^(1/3) (paper eq. 8, "a characteristic length scale of the cell"): on the anisotropic grid
+  // (hx = 0.01, hy = 0.02, hz = 0.015) each weight is exp(-a |x_cell - x_p|^2 / h^2) in metres, renormalised
+  // over the 5 x 5 x 5 window, computed here from the distances directly.
+  const MaskedGrid g = makeGrid({12, 10, 8}, true);
+  const int c0[3] = {3, 4, 4};
+  const double t[3] = {0.3, -0.45, 0.1};
+  double x[3];
+  for (int d = 0; d < 3; ++d) x[d] = g.grid.cellCentre(d, c0[d]) + t[d] * g.grid.spacing[d];
+  const double a = 1.0;
+  const double spacing[3] = {g.grid.spacing[0], g.grid.spacing[1], g.grid.spacing[2]};
+  const double h = std::cbrt(spacing[0] * spacing[1] * spacing[2]);
+  Stencil s;
+  const GaussianKernel kernel(a, 2, spacing);
+  ASSERT_EQ(stencilOf(kernel, g.grid, x, g, s), StencilResult::ok);
+  ASSERT_EQ(s.size, 125);
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double r2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const double dx = g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d];
+      r2 += dx * dx;
+    }
+    expected[e] = std::exp(-a * r2 / (h * h));
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+  // per axis in that axis' cell lengths: a (h_d / h)^2, narrower along the longest axis
+  for (int d = 0; d < 3; ++d) EXPECT_NEAR(kernel.axisSharpness(d), a * spacing[d] * spacing[d] / (h * h), 1e-14);
+  // on cubic cells it is the per-axis kernel exactly
+  const double cube[3] = {0.004, 0.004, 0.004};
+  for (int d = 0; d < 3; ++d) EXPECT_EQ(GaussianKernel(a, 2, cube).axisSharpness(d), a);
+}
+
 TEST(KernelWeights, GatherOfLinearFieldInTheInterior) {
   // A linear field f = x (per axis) at cell centres, gathered at the parcel: exact at cell centres by
   // symmetry; elsewhere the truncated lattice Gaussian has a small bias sum w x_c - x_p. It is NOT zero
