@@ -36,7 +36,9 @@ Parcels randomParcels(const MaskedGrid& g, std::size_t n, unsigned seed) {
 }
 
 std::vector<TransferKernel> kernels() {
-  return {GaussianKernel(1.0, 2), GaussianKernel(1.0, 1), GaussianKernel(0.5, 3), CentroidKernel(1)};
+  const double spacing[3] = {0.01, 0.02, 0.015};  // the test grid's (test_grid.hpp): h = cbrt(cell volume)
+  return {GaussianKernel(1.0, 2), GaussianKernel(1.0, 1), GaussianKernel(0.5, 3), GaussianKernel(1.0, 2, spacing),
+          CentroidKernel(1)};
 }
 
 const char* name(const TransferKernel& k) { return std::holds_alternative<GaussianKernel>(k) ? "gaussian" : "centroid"; }

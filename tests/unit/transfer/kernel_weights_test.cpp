@@ -20,14 +20,18 @@ using namespace parcelflow::coupling::test;
 
 namespace {
 
+// the test grid's cell lengths (test_grid.hpp), for the kernel with one length scale
+const double kTestSpacing[3] = {0.01, 0.02, 0.015};
+
 std::vector<TransferKernel> allKernels() {
   return {GaussianKernel(1.0, 1), GaussianKernel(1.0, 2), GaussianKernel(1.0, 3), GaussianKernel(2.0, 2),
-          GaussianKernel(0.5, 3), GaussianKernel(1.0, 4), CentroidKernel(1)};
+          GaussianKernel(0.5, 3), GaussianKernel(1.0, 4), GaussianKernel(1.0, 2, kTestSpacing), CentroidKernel(1)};
 }
 
 std::string describe(const TransferKernel& k) {
   if (const auto* g = std::get_if<GaussianKernel>(&k))
-    return "gaussian a=" + std::to_string(g->sharpness()) + " R=" + std::to_string(g->radius());
+    return "gaussian a=" + std::to_string(g->sharpness()) + " R=" + std::to_string(g->radius()) +
+           (g->axisSharpness(0) == g->axisSharpness(1) ? "" : " h=cbrt(cell volume)");
   return "centroid";
 }
 
@@ -45,6 +49,15 @@ std::vector<double> testPositions(const MaskedGrid& g) {
                                {x0 + 0.119999, y0 + 0.099, z0 + 0.1199}};      // far corner of the arm
   for (const auto& s : special) pos.insert(pos.end(), s, s + 3);
   return pos;
+}
+
+// A parcel displaced by kOffCentreShift cell lengths (per axis) from the centre of cell kOffCentreCell.
+const int kOffCentreCell[3] = {3, 4, 4};
+const double kOffCentreShift[3] = {0.3, -0.45, 0.1};
+
+void offCentreParcel(const MaskedGrid& g, double (&x)[3]) {
+  for (int d = 0; d < 3; ++d)
+    x[d] = g.grid.cellCentre(d, kOffCentreCell[d]) + kOffCentreShift[d] * g.grid.spacing[d];
 }
 
 }  // namespace
@@ -117,10 +130,10 @@ TEST(KernelWeights, GaussianOffCentreUsesCellUnitsPerAxis) {
   // parcel displaced by t = (0.3, -0.45, 0.1) cell lengths from the centre of cell (3, 4, 4) on the
   // anisotropic grid (hx = 0.01, hy = 0.02, hz = 0.015): w = prod_d exp(-a (m_d - t_d)^2) / Z_d
   const MaskedGrid g = makeGrid({12, 10, 8}, true);
-  const int c0[3] = {3, 4, 4};
-  const double t[3] = {0.3, -0.45, 0.1};
+  const int* c0 = kOffCentreCell;
+  const double* t = kOffCentreShift;
   double x[3];
-  for (int d = 0; d < 3; ++d) x[d] = g.grid.cellCentre(d, c0[d]) + t[d] * g.grid.spacing[d];
+  offCentreParcel(g, x);
   const double a = 1.0;
   double z[3] = {0, 0, 0};
   for (int d = 0; d < 3; ++d)
@@ -143,10 +156,8 @@ TEST(KernelWeights, GaussianWithTheCellVolumeLengthIsIsotropicInSpace) {
   // (hx = 0.01, hy = 0.02, hz = 0.015) each weight is exp(-a |x_cell - x_p|^2 / h^2) in metres, renormalised
   // over the 5 x 5 x 5 window, computed here from the distances directly.
   const MaskedGrid g = makeGrid({12, 10, 8}, true);
-  const int c0[3] = {3, 4, 4};
-  const double t[3] = {0.3, -0.45, 0.1};
   double x[3];
-  for (int d = 0; d < 3; ++d) x[d] = g.grid.cellCentre(d, c0[d]) + t[d] * g.grid.spacing[d];
+  offCentreParcel(g, x);
   const double a = 1.0;
   const double spacing[3] = {g.grid.spacing[0], g.grid.spacing[1], g.grid.spacing[2]};
   const double h = std::cbrt(spacing[0] * spacing[1] * spacing[2]);
