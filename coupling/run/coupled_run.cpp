@@ -383,6 +383,17 @@ void CoupledRun::finalize() {
   const RunCounters total = s.counters.totals(MPI_COMM_WORLD);
   const long lost = s.loop.initial_parcels - s.dem->parcels().globalCount();
   const PeakMemory memory = peakMemory(MPI_COMM_WORLD);
+  WallClockSplit fastest, slowest;
+  for (int p = 0; p < 4; ++p) {
+    const Phase phase = static_cast<Phase>(p);
+    double mine = s.progress.split.seconds(phase), low = 0.0, high = 0.0;
+    MPI_Allreduce(&mine, &low, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    MPI_Allreduce(&mine, &high, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    fastest.add(phase, low);
+    slowest.add(phase, high);
+  }
+  int ranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
   if (s.rank == 0) {
     std::printf("%s\n", formatProgress(s.progress).c_str());
     std::printf("parcelflow: done: %ld gas steps, %.6g s simulated in %.1f s wall; lowest gas fraction %.4f; "
@@ -401,6 +412,9 @@ void CoupledRun::finalize() {
                 total.preconditioner_builds, s.loop.step, total.unconverged_solves);
     std::printf("parcelflow: peak memory per rank: largest %.1f MB (rank %d), smallest %.1f MB\n",
                 memory.largest_mb, memory.largest_rank, memory.smallest_mb);
+    if (ranks > 1)
+      std::printf("parcelflow: wall time per phase, fastest-slowest rank: %s\n",
+                  formatSplitRange(fastest, slowest).c_str());
     if (s.averages && s.averages->averagedTime() > 0.0)
       std::printf("parcelflow: time averages over %.4g s: bed height %.4g m (averages.csv, averages.xdmf)\n",
                   s.averages->averagedTime(), s.averages->bedHeight());

@@ -37,4 +37,16 @@ std::string formatProgress(const ProgressState& s) {
   return buf;
 }
 
+std::string formatSplitRange(const WallClockSplit& fastest, const WallClockSplit& slowest) {
+  const char* const names[] = {"DEM", "coupling", "gas", "output"};
+  std::string line;
+  for (int p = 0; p < 4; ++p) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s%s %.1f-%.1f s", p == 0 ? "" : " | ", names[p],
+                  fastest.seconds(static_cast<Phase>(p)), slowest.seconds(static_cast<Phase>(p)));
+    line += buf;
+  }
+  return line;
+}
+
 }  // namespace parcelflow::coupling

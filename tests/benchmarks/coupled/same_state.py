@@ -8,8 +8,9 @@
    the restart) for the same number of DEM steps: the same parcels and contacts, with the last gas forces held
    fixed by fix parcel/implicit_drag (kappa, u_f and f_p are in the restart), so the bed stays fluidized. Its
    time is LIGGGHTS' 'Loop time'.
-Both on the same ranks, back to back. Prints both times, their ratio, the split, parcel-steps per second and
-the coupled run's peak memory per rank.
+Both on the same ranks, back to back. Prints both times, their ratio, the split, parcel-steps per second,
+the coupled run's peak memory per rank and, on more than one rank, each phase's time on the fastest and the
+slowest rank.
 With --checkpoint (a checkpoint of a run of --case, a folder path; for beds whose settling and establishing
 take hours, such as the full FCC bed) step 1 is skipped: the measured state is that checkpoint's.
 """
@@ -85,8 +86,10 @@ def main():
           f"{args.ranks} rank(s): coupled loop {wall:.2f} s, pure LIGGGHTS {pure:.2f} s, ratio {wall / pure:.3f}; "
           f"coupled {parcels * steps / wall:.3g}, pure {parcels * steps / pure:.3g} parcel-steps/s")
     print(f"coupled split: {split}")
-    memory = [line for line in coupled.splitlines() if line.startswith("parcelflow: peak memory per rank")]
-    print(f"coupled {memory[-1][len('parcelflow: '):] if memory else 'peak memory: (no summary line)'}")
+    for start in ("parcelflow: peak memory per rank", "parcelflow: wall time per phase"):
+        lines = [line for line in coupled.splitlines() if line.startswith(start)]
+        if lines:
+            print(f"coupled {lines[-1][len('parcelflow: '):]}")
 
 
 if __name__ == "__main__":

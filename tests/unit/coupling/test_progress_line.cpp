@@ -32,3 +32,16 @@ TEST(ProgressLine, EtaOfARunContinuedFromACheckpointCountsOnlyThisRunsPart) {
 TEST(ProgressLine, NoEtaBeforeAnyStep) {
   EXPECT_NE(formatProgress(state(45.0, 45.0, 50.0, 0.0)).find("ETA --:--:--"), std::string::npos);
 }
+
+TEST(ProgressLine, SplitRangeNamesEachPhaseWithItsFastestAndSlowestRank) {
+  WallClockSplit fastest, slowest;
+  fastest.add(Phase::dem, 83.14);
+  slowest.add(Phase::dem, 84.0);
+  fastest.add(Phase::coupling, 19.2);
+  slowest.add(Phase::coupling, 20.46);
+  fastest.add(Phase::gas, 5.4);
+  slowest.add(Phase::gas, 5.5);
+  slowest.add(Phase::output, 0.08);
+  EXPECT_EQ(formatSplitRange(fastest, slowest),
+            "DEM 83.1-84.0 s | coupling 19.2-20.5 s | gas 5.4-5.5 s | output 0.0-0.1 s");
+}
