@@ -25,11 +25,7 @@ void FieldWriter::continueSeries(const std::vector<double>& times, const std::ve
   for (double t : times) snapshots_.push_back({t, snapshotFile(snapshots_.size()), scalars, vectors});
 }
 
-std::string FieldWriter::snapshotFile(std::size_t index) const {
-  char text[16];
-  std::snprintf(text, sizeof text, "%06zu", index);
-  return name_ + "_" + text + ".h5";
-}
+std::string FieldWriter::snapshotFile(std::size_t index) const { return seriesFileName(name_, index); }
 
 void FieldWriter::writeMesh() {
   const int n = mesh_.nOwnedCells();

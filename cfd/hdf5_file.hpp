@@ -6,6 +6,7 @@
 #include <mpi.h>
 
 #include <cerrno>
+#include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -17,6 +18,13 @@ namespace parcelflow::cfd {
 // An HDF5 file is written as PATH.partial and renamed to PATH once closed on every rank, so that a run
 // killed while writing (SIGKILL, a node failure) leaves no file under the real name that does not open.
 inline std::string partialPath(const std::string& path) { return path + ".partial"; }
+// The file of snapshot `index` of an output series ("fields", "parcels", "averages"): NAME_000012.h5, the
+// one spelling the writers and the restart's check of an output folder share.
+inline std::string seriesFileName(const std::string& name, std::size_t index) {
+  char digits[32];  // room for any size_t
+  std::snprintf(digits, sizeof digits, "_%06zu.h5", index);
+  return name + digits;
+}
 // Collective, after each rank closed its handle of partialPath(path) (`closed_here`: whether that worked):
 // throws on every rank if any rank failed to close, else rank 0 renames partialPath(path) to path (throws on
 // every rank if that fails). (Inline: the parcel writer's library uses it without the gas solver's.)

@@ -82,11 +82,7 @@ ParcelWriter::ParcelWriter(MPI_Comm comm, std::string directory, std::string nam
   MPI_Comm_size(comm_, &size_);
 }
 
-std::string ParcelWriter::fileName(std::size_t index) const {
-  char digits[16];
-  std::snprintf(digits, sizeof digits, "%06zu", index);
-  return name_ + "_" + digits + ".h5";
-}
+std::string ParcelWriter::fileName(std::size_t index) const { return cfd::seriesFileName(name_, index); }
 
 void ParcelWriter::continueSeries(std::size_t snapshots) {
   times_.assign(snapshots, 0.0);

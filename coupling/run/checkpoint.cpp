@@ -248,9 +248,8 @@ void checkOutputSeries(const Checkpoint& checkpoint, const std::string& output_f
                           " bytes written at checkpoint " + checkpoint.id);
   auto requireSeries = [&](const std::string& name, std::size_t snapshots) {
     for (std::size_t i = 0; i < snapshots; ++i) {
-      char file[64];
-      std::snprintf(file, sizeof file, "%s_%06zu.h5", name.c_str(), i);
-      if (!fs::is_regular_file(folder / file)) throw ConfigError((folder / file).string(), "missing", allowed);
+      const fs::path file = folder / cfd::seriesFileName(name, i);
+      if (!fs::is_regular_file(file)) throw ConfigError(file.string(), "missing", allowed);
     }
   };
   requireSeries("parcels", static_cast<std::size_t>(checkpoint.loop.parcel_snapshots));

@@ -383,14 +383,14 @@ void CoupledRun::finalize() {
   const RunCounters total = s.counters.totals(MPI_COMM_WORLD);
   const long lost = s.loop.initial_parcels - s.dem->parcels().globalCount();
   const PeakMemory memory = peakMemory(MPI_COMM_WORLD);
+  double mine[4], low[4], high[4];
+  for (int p = 0; p < 4; ++p) mine[p] = s.progress.split.seconds(static_cast<Phase>(p));
+  MPI_Allreduce(mine, low, 4, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+  MPI_Allreduce(mine, high, 4, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   WallClockSplit fastest, slowest;
   for (int p = 0; p < 4; ++p) {
-    const Phase phase = static_cast<Phase>(p);
-    double mine = s.progress.split.seconds(phase), low = 0.0, high = 0.0;
-    MPI_Allreduce(&mine, &low, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
-    MPI_Allreduce(&mine, &high, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    fastest.add(phase, low);
-    slowest.add(phase, high);
+    fastest.add(static_cast<Phase>(p), low[p]);
+    slowest.add(static_cast<Phase>(p), high[p]);
   }
   int ranks = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &ranks);
