@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace parcelflow::coupling {
 
@@ -18,6 +19,15 @@ std::string clock(double seconds) {
 
 int percentOf(double part, double whole) { return whole > 0.0 ? static_cast<int>(std::lround(100.0 * part / whole)) : 0; }
 
+// "DEM <value> | coupling <value> | gas <value> | output <value>", each value written by `value(phase)`
+template <class Format>
+std::string perPhase(Format value) {
+  const char* const names[] = {"DEM", "coupling", "gas", "output"};
+  std::string line;
+  for (int p = 0; p < 4; ++p) line += std::string(p == 0 ? "" : " | ") + names[p] + " " + value(static_cast<Phase>(p));
+  return line;
+}
+
 }  // namespace
 
 std::string formatProgress(const ProgressState& s) {
@@ -27,26 +37,18 @@ std::string formatProgress(const ProgressState& s) {
   const double eta = done > 0.0 ? s.wall_seconds * std::max(left, 0.0) / done : INFINITY;
   const double rate = s.wall_seconds > 0.0 ? s.parcel_steps / s.wall_seconds : 0.0;
   const double busy = s.split.total();
-  char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "t = %.4f / %.4f s (%5.1f %%)  ETA %s  %.3g parcel-steps/s  DEM %d %% | coupling %d %% | gas %d %% | "
-                "output %d %%",
-                s.time, s.end_time, 100.0 * fraction, clock(eta).c_str(), rate, percentOf(s.split.seconds(Phase::dem), busy),
-                percentOf(s.split.seconds(Phase::coupling), busy), percentOf(s.split.seconds(Phase::gas), busy),
-                percentOf(s.split.seconds(Phase::output), busy));
-  return buf;
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "t = %.4f / %.4f s (%5.1f %%)  ETA %s  %.3g parcel-steps/s  ", s.time, s.end_time,
+                100.0 * fraction, clock(eta).c_str(), rate);
+  return buf + perPhase([&](Phase p) { return std::to_string(percentOf(s.split.seconds(p), busy)) + " %"; });
 }
 
 std::string formatSplitRange(const WallClockSplit& fastest, const WallClockSplit& slowest) {
-  const char* const names[] = {"DEM", "coupling", "gas", "output"};
-  std::string line;
-  for (int p = 0; p < 4; ++p) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%s%s %.1f-%.1f s", p == 0 ? "" : " | ", names[p],
-                  fastest.seconds(static_cast<Phase>(p)), slowest.seconds(static_cast<Phase>(p)));
-    line += buf;
-  }
-  return line;
+  return perPhase([&](Phase p) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.1f-%.1f s", fastest.seconds(p), slowest.seconds(p));
+    return std::string(buf);
+  });
 }
 
 }  // namespace parcelflow::coupling

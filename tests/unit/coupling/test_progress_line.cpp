@@ -45,3 +45,14 @@ TEST(ProgressLine, SplitRangeNamesEachPhaseWithItsFastestAndSlowestRank) {
   EXPECT_EQ(formatSplitRange(fastest, slowest),
             "DEM 83.1-84.0 s | coupling 19.2-20.5 s | gas 5.4-5.5 s | output 0.0-0.1 s");
 }
+
+TEST(ProgressLine, WholeLineWithTheSplitOfEachPhase) {
+  ProgressState s = state(0.0, 0.25, 1.0, 30.0);
+  s.parcel_steps = 6.93e7;
+  s.split.add(Phase::dem, 55.0);
+  s.split.add(Phase::coupling, 10.0);
+  s.split.add(Phase::gas, 33.0);
+  s.split.add(Phase::output, 2.0);
+  EXPECT_EQ(formatProgress(s), "t = 0.2500 / 1.0000 s ( 25.0 %)  ETA 0:01:30  2.31e+06 parcel-steps/s  "
+                               "DEM 55 % | coupling 10 % | gas 33 % | output 2 %");
+}
