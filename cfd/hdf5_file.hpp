@@ -18,8 +18,15 @@ namespace parcelflow::cfd {
 // An HDF5 file is written as PATH.partial and renamed to PATH once closed on every rank, so that a run
 // killed while writing (SIGKILL, a node failure) leaves no file under the real name that does not open.
 inline std::string partialPath(const std::string& path) { return path + ".partial"; }
-// The file of snapshot `index` of an output series ("fields", "parcels", "averages"): NAME_000012.h5, the
-// one spelling the writers and the restart's check of an output folder share.
+// The output series of a coupled run (NAME_000012.h5 and NAME.xdmf in its output folder): the names the
+// writers are made with and the restart's check of an output folder looks for.
+namespace series {
+inline constexpr const char* fields = "fields";
+inline constexpr const char* parcels = "parcels";
+inline constexpr const char* averages = "averages";
+}  // namespace series
+// The file of snapshot `index` of an output series: NAME_000012.h5, the one spelling the writers and the
+// restart's check of an output folder share.
 inline std::string seriesFileName(const std::string& name, std::size_t index) {
   char digits[32];  // room for any size_t
   std::snprintf(digits, sizeof digits, "_%06zu.h5", index);

@@ -29,7 +29,7 @@ struct ParcelSnapshot {
 
 class ParcelWriter {
  public:
-  ParcelWriter(MPI_Comm comm, std::string directory, std::string name = "parcels");
+  ParcelWriter(MPI_Comm comm, std::string directory, std::string name);
 
   // A restarted run: keeps the first `snapshots` files of the series (snapshots() when the checkpoint
   // was written), re-reads their times and sizes, rewrites the index with only them, and numbers the

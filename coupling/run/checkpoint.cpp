@@ -252,10 +252,10 @@ void checkOutputSeries(const Checkpoint& checkpoint, const std::string& output_f
       if (!fs::is_regular_file(file)) throw ConfigError(file.string(), "missing", allowed);
     }
   };
-  requireSeries("parcels", static_cast<std::size_t>(checkpoint.loop.parcel_snapshots));
-  requireSeries("fields", checkpoint.loop.field_times.size());
+  requireSeries(cfd::series::parcels, static_cast<std::size_t>(checkpoint.loop.parcel_snapshots));
+  requireSeries(cfd::series::fields, checkpoint.loop.field_times.size());
   const auto averages = checkpoint.loop.averages.find("field_times");
-  if (averages != checkpoint.loop.averages.end()) requireSeries("averages", averages->second.size());
+  if (averages != checkpoint.loop.averages.end()) requireSeries(cfd::series::averages, averages->second.size());
 }
 
 }  // namespace parcelflow::coupling

@@ -10,6 +10,7 @@
 #include "cfd/field_writer.hpp"
 #include "cfd/gas_checkpoint.hpp"
 #include "cfd/gas_solver.hpp"
+#include "cfd/hdf5_file.hpp"
 #include "blowup_guard.h"
 #include "case_reader.h"
 #include "checkpoint.h"
@@ -173,8 +174,8 @@ void CoupledRun::initialize() {
   s.guard = std::make_unique<BlowupGuard>(MPI_COMM_WORLD, cs.coupling.guards, s.loop.initial_parcels);
   s.loop.next_checkpoint = cs.output.checkpoint_interval;  // the other output times start at 0
   if (!checkpoint) clearEarlierRun(s.output.string(), MPI_COMM_WORLD);
-  s.fields = std::make_unique<cfd::FieldWriter>(mesh, s.output.string(), "fields");
-  s.parcel_output = std::make_unique<ParcelWriter>(MPI_COMM_WORLD, s.output.string());
+  s.fields = std::make_unique<cfd::FieldWriter>(mesh, s.output.string(), cfd::series::fields);
+  s.parcel_output = std::make_unique<ParcelWriter>(MPI_COMM_WORLD, s.output.string(), cfd::series::parcels);
   if (cs.monitors.averages())
     s.averages = std::make_unique<TimeAverages>(mesh, cs.monitors.pressure_planes, cs.monitors.average_start,
                                                 std::abs(s.case_def.gas.gas.gravity[2]), s.output.string());

@@ -23,7 +23,7 @@ TimeAverages::TimeAverages(const cfd::Mesh& mesh, const std::vector<double>& hei
       solids_sum_(mesh.nOwnedCells(), 0.0),
       gas_speed_sum_(mesh.nOwnedCells(), 0.0),
       solids_speed_sum_(mesh.nOwnedCells(), 0.0),
-      fields_(mesh, output_folder, "averages") {}
+      fields_(mesh, output_folder, cfd::series::averages) {}
 
 void TimeAverages::add(double time, double dt, const cfd::GasSolver& gas, const std::vector<double>& solid_fraction,
                        const std::vector<double>& solids_velocity) {

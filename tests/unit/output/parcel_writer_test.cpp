@@ -72,14 +72,14 @@ TEST(ParcelWriter, WritesSeriesAndContinuesIt) {
   TempFolder dir;
   const int ranks = size();
   {
-    ParcelWriter writer(MPI_COMM_WORLD, dir.path());
+    ParcelWriter writer(MPI_COMM_WORLD, dir.path(), "parcels");
     writer.write(0.25, parcels(3 + 2 * rank()));
     writer.write(0.5, parcels(0));                      // no parcels at all
     writer.write(0.75, parcels(rank() == 0 ? 0 : 4));   // rank 0 empty
     writer.write(1.0, parcels(9));                      // after the checkpoint: dropped below
     EXPECT_EQ(writer.snapshots(), 4u);
   }
-  ParcelWriter continued(MPI_COMM_WORLD, dir.path());
+  ParcelWriter continued(MPI_COMM_WORLD, dir.path(), "parcels");
   continued.continueSeries(3);
   EXPECT_EQ(continued.snapshots(), 3u);
   continued.write(1.0, parcels(2));

@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
                               cfd::Primitive::box(cfd::Vec3::Zero(), cfd::Vec3(0.04, 0.03, 0.05)), ""}});
     const cfd::Mesh mesh = cfd::MeshBuilder::build(settings, box, MPI_COMM_WORLD);
     cfd::FieldWriter fields(mesh, argv[1], "fields");
-    coupling::ParcelWriter parcels(MPI_COMM_WORLD, argv[1]);
+    coupling::ParcelWriter parcels(MPI_COMM_WORLD, argv[1], "parcels");
     for (int step = 1; step <= 2; ++step) {
       cfd::ScalarField gas_fraction(mesh.nOwnedCells());
       cfd::VectorField velocity(mesh.nOwnedCells());
