@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Plots of a goldschmidt_segregation run: the mean height of each size class against time (the measure
 Goldschmidt used), the bed pressure drop against the bed weight, and solids-fraction snapshots from the
-HDF5 fields. Prints the segregation summary over the last half of the run (or the last 10 s if longer).
+HDF5 fields (six times over the run, and the last second's snapshots one after the other). Prints the
+segregation summary and the void measure over the last half of the run (or the last 10 s if longer) and, for
+a run of at least 4 s, the same in 2 s windows.
 Usage: plot.py [OUTPUT_FOLDER] (default: output next to this file)."""
 import csv
 import glob
@@ -41,21 +43,25 @@ fig.tight_layout()
 heights_png = os.path.join(folder, "goldschmidt_heights.png")
 fig.savefig(heights_png, dpi=120)
 
-# Solids fraction on the mid plane (the middle of the 5 cells across the depth) at up to six times.
-snapshots = sorted(glob.glob(os.path.join(folder, "fields_[0-9]*.h5")))
-picked = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1, min(6, len(snapshots)))] if snapshots else []
-if picked:
+
+def snapshot_time(path):
+    with h5py.File(path, "r") as f:
+        return float(np.asarray(f["time"])[0])
+
+
+def plot_snapshots(paths, png, title):
+    """Solids fraction on the mid plane (the middle of the 5 cells across the depth) of the field files."""
     with h5py.File(os.path.join(folder, "fields_mesh.h5"), "r") as f:
         centre = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)  # output order
     spacing = [np.diff(np.unique(np.round(centre[:, d], 9)))[0] for d in range(3)]
     index = [np.rint((centre[:, d] - centre[:, d].min()) / spacing[d]).astype(int) for d in range(3)]
     shape = [i.max() + 1 for i in index]
     mid = index[1] == shape[1] // 2
-    fig, axes = plt.subplots(1, len(picked), figsize=(2.0 * len(picked), 6), squeeze=False)
-    for ax, path in zip(axes[0], picked):
+    fig, axes = plt.subplots(1, len(paths), figsize=(2.0 * len(paths), 6), squeeze=False)
+    for ax, path in zip(axes[0], paths):
         with h5py.File(path, "r") as f:
             solids_out = 1.0 - np.asarray(f["gas_fraction"])
-            time = float(np.asarray(f["time"])[0])
+        time = snapshot_time(path)
         plane = np.full((shape[2], shape[0]), np.nan)
         plane[index[2][mid], index[0][mid]] = solids_out[mid]
         top = centre[:, 2].max() + 0.5 * spacing[2]
@@ -65,11 +71,23 @@ if picked:
         ax.set_title(f"t = {time:.2f} s", fontsize=8)
         ax.set_xticks([])
     axes[0][0].set_ylabel("z [m]")
-    fig.suptitle("solids fraction on the mid plane (0 to 0.65)")
+    fig.suptitle(title)
     fig.tight_layout()
-    snapshots_png = os.path.join(folder, "goldschmidt_solids_fraction.png")
-    fig.savefig(snapshots_png, dpi=120)
-    print(f"plot written: {snapshots_png}")
+    fig.savefig(png, dpi=120)
+    print(f"plot written: {png}")
+
+
+# Six times spread over the run, and the last second's snapshots one after the other (up to 10), in which a
+# bubble can be followed from the plate to the surface.
+snapshots = sorted(glob.glob(os.path.join(folder, "fields_[0-9]*.h5")))
+if snapshots:
+    spread = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1, min(6, len(snapshots)))]
+    plot_snapshots(spread, os.path.join(folder, "goldschmidt_solids_fraction.png"),
+                   "solids fraction on the mid plane (0 to 0.65)")
+    last = [p for p in snapshots if snapshot_time(p) > t[-1] - 1.0 + 1e-9][-10:]
+    if last:
+            plot_snapshots(last, os.path.join(folder, "goldschmidt_solids_fraction_last_second.png"),
+                       "solids fraction on the mid plane, the last second (0 to 0.65)")
 
 window = t >= max(t[-1] - 10.0, t[-1] / 2)
 h_small, h_large = small[window].mean(), large[window].mean()
@@ -93,3 +111,13 @@ print(f"voids over {voids['snapshots']} field snapshots of the same window (void
       f"{100 * voids['layer_share']:.0f} %, {voids['bubbles_per_snapshot']:.2f} bubbles per snapshot, mean bubble width "
       f"{1000 * voids['mean_bubble_width']:.1f} mm, lateral spread of the gas fraction {voids['lateral_spread']:.3f}")
 print(f"plot written: {heights_png}")
+
+# A longer run in 2 s windows: how the segregation develops and whether the voids change with it.
+if t[-1] >= 4.0:
+    print("window   small [mm]  large [mm]  segregation  dp/(W/A)  rms dp/(W/A)  layer share  bubbles/snapshot")
+    for a in np.arange(0.0, t[-1] - 1.0, 2.0):
+        w = (t >= a) & (t < a + 2.0)
+        hs, hl, ratio = small[w].mean(), large[w].mean(), dp[w] / weight[w]
+        v = void_shape.run_measure(void_shape.read_run(folder, a, a + 2.0))
+        print(f"{a:4.0f}-{a + 2:<3.0f} {1000 * hs:10.1f}  {1000 * hl:10.1f}  {(hs - hl) / (0.5 * (hs + hl)):11.3f}  "
+              f"{ratio.mean():8.3f}  {ratio.std():12.3f}  {v['layer_share']:11.2f}  {v['bubbles_per_snapshot']:16.2f}")
