@@ -6,7 +6,6 @@ segregation summary and the void measure over the last half of the run (or the l
 a run of at least 4 s, the same in 2 s windows.
 Usage: plot.py [OUTPUT_FOLDER] (default: output next to this file)."""
 import csv
-import glob
 import os
 import sys
 
@@ -44,24 +43,19 @@ heights_png = os.path.join(folder, "goldschmidt_heights.png")
 fig.savefig(heights_png, dpi=120)
 
 
-def snapshot_time(path):
-    with h5py.File(path, "r") as f:
-        return float(np.asarray(f["time"])[0])
-
-
-def plot_snapshots(paths, png, title):
-    """Solids fraction on the mid plane (the middle of the 5 cells across the depth) of the field files."""
+def plot_snapshots(picked, png, title):
+    """Solids fraction on the mid plane (the middle of the 5 cells across the depth) of the field files
+    picked [(path, time), ...]."""
     with h5py.File(os.path.join(folder, "fields_mesh.h5"), "r") as f:
         centre = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)  # output order
     spacing = [np.diff(np.unique(np.round(centre[:, d], 9)))[0] for d in range(3)]
     index = [np.rint((centre[:, d] - centre[:, d].min()) / spacing[d]).astype(int) for d in range(3)]
     shape = [i.max() + 1 for i in index]
     mid = index[1] == shape[1] // 2
-    fig, axes = plt.subplots(1, len(paths), figsize=(2.0 * len(paths), 6), squeeze=False)
-    for ax, path in zip(axes[0], paths):
+    fig, axes = plt.subplots(1, len(picked), figsize=(2.0 * len(picked), 6), squeeze=False)
+    for ax, (path, time) in zip(axes[0], picked):
         with h5py.File(path, "r") as f:
             solids_out = 1.0 - np.asarray(f["gas_fraction"])
-        time = snapshot_time(path)
         plane = np.full((shape[2], shape[0]), np.nan)
         plane[index[2][mid], index[0][mid]] = solids_out[mid]
         top = centre[:, 2].max() + 0.5 * spacing[2]
@@ -79,15 +73,21 @@ def plot_snapshots(paths, png, title):
 
 # Six times spread over the run, and the last second's snapshots one after the other (up to 10), in which a
 # bubble can be followed from the plate to the surface.
-snapshots = sorted(glob.glob(os.path.join(folder, "fields_[0-9]*.h5")))
+snapshots = void_shape.read_snapshots(folder)  # [(path, time, depth-averaged gas fraction), ...]
 if snapshots:
-    spread = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1, min(6, len(snapshots)))]
+    spread = [snapshots[int(i)][:2] for i in np.linspace(0, len(snapshots) - 1, min(6, len(snapshots)))]
     plot_snapshots(spread, os.path.join(folder, "goldschmidt_solids_fraction.png"),
                    "solids fraction on the mid plane (0 to 0.65)")
-    last = [p for p in snapshots if snapshot_time(p) > t[-1] - 1.0 + 1e-9][-10:]
+    last = [(path, time) for path, time, _ in snapshots if time > t[-1] - 1.0 + 1e-9][-10:]
     if last:
-            plot_snapshots(last, os.path.join(folder, "goldschmidt_solids_fraction_last_second.png"),
+        plot_snapshots(last, os.path.join(folder, "goldschmidt_solids_fraction_last_second.png"),
                        "solids fraction on the mid plane, the last second (0 to 0.65)")
+
+
+def void_measure(start, end=float("inf")):
+    """void_shape's measure over the snapshots at times in [start, end)."""
+    return void_shape.run_measure([a for _, time, a in snapshots if start <= time < end])
+
 
 window = t >= max(t[-1] - 10.0, t[-1] / 2)
 h_small, h_large = small[window].mean(), large[window].mean()
@@ -106,7 +106,7 @@ print(f"over {t[window][0]:.2f}-{t[-1]:.2f} s: mean height small {1000 * h_small
       f"{dp[window].mean() / weight[window].mean():.3f}")
 for name, h in (("small", small), ("large", large)):
     print("rms of the %s class's mean height: %.2f mm about its mean, %.2f mm about its linear trend" % ((name,) + rms_mm(h)))
-voids = void_shape.run_measure(void_shape.read_run(folder, t[window][0]))
+voids = void_measure(t[window][0])
 print(f"voids over {voids['snapshots']} field snapshots of the same window (void_shape.py): a bed-wide gas layer in "
       f"{100 * voids['layer_share']:.0f} %, {voids['bubbles_per_snapshot']:.2f} bubbles per snapshot, mean bubble width "
       f"{1000 * voids['mean_bubble_width']:.1f} mm, lateral spread of the gas fraction {voids['lateral_spread']:.3f}")
@@ -118,6 +118,6 @@ if t[-1] >= 4.0:
     for a in np.arange(0.0, t[-1] - 1.0, 2.0):
         w = (t >= a) & (t < a + 2.0)
         hs, hl, ratio = small[w].mean(), large[w].mean(), dp[w] / weight[w]
-        v = void_shape.run_measure(void_shape.read_run(folder, a, a + 2.0))
+        v = void_measure(a, a + 2.0)
         print(f"{a:4.0f}-{a + 2:<3.0f} {1000 * hs:10.1f}  {1000 * hl:10.1f}  {(hs - hl) / (0.5 * (hs + hl)):11.3f}  "
               f"{ratio.mean():8.3f}  {ratio.std():12.3f}  {v['layer_share']:11.2f}  {v['bubbles_per_snapshot']:16.2f}")

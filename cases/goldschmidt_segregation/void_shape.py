@@ -109,8 +109,8 @@ def run_measure(snapshots):
             "lateral_spread": float(np.mean(spreads)) if spreads else 0.0}
 
 
-def read_run(folder, start=0.0, end=float("inf")):
-    """The depth-averaged snapshots of a run's fields_*.h5 at times in [start, end)."""
+def read_snapshots(folder):
+    """[(path, time, (a, dx)), ...]: each of a run's fields_*.h5 in order, with its depth-averaged gas fraction."""
     import glob
     import os
 
@@ -120,7 +120,11 @@ def read_run(folder, start=0.0, end=float("inf")):
     out = []
     for path in sorted(glob.glob(os.path.join(folder, "fields_[0-9]*.h5"))):
         with h5py.File(path, "r") as f:
-            if not start <= float(np.asarray(f["time"])[0]) < end:
-                continue
-            out.append(depth_averaged(np.asarray(f["gas_fraction"]), centres))
+            out.append((path, float(np.asarray(f["time"])[0]),
+                        depth_averaged(np.asarray(f["gas_fraction"]), centres)))
     return out
+
+
+def read_run(folder, start=0.0):
+    """The depth-averaged snapshots of a run's fields_*.h5 at times >= start."""
+    return [snapshot for _, time, snapshot in read_snapshots(folder) if time >= start]
