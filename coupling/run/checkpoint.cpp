@@ -26,6 +26,18 @@ namespace {
 
 const char* const kStepPrefix = "step_";
 const char* const kPartialPrefix = ".partial_step_";
+const char* const kRetiredPrefix = ".retired_";
+
+// Deletes a checkpoint folder so that no half-deleted folder keeps a complete checkpoint's name: a kill
+// during remove_all would otherwise leave step_<N> without gas.h5. The rename is atomic; what a kill leaves
+// of a .retired_ folder is removed by the next checkpoint.
+void retire(const fs::path& folder) {
+  if (!fs::exists(folder)) return;
+  const fs::path retired = folder.parent_path() / (kRetiredPrefix + folder.filename().string());
+  fs::remove_all(retired);
+  fs::rename(folder, retired);
+  fs::remove_all(retired);
+}
 
 // Keys a restart may change: when to stop, what and how often to write, how hard the solvers iterate, when
 // the blow-up guard stops.
@@ -88,6 +100,8 @@ CheckpointDraft beginCheckpoint(const std::string& output_folder, long step, MPI
     std::snprintf(tag, sizeof tag, "%ld-%08x%08x", step, random(), random());
     id = tag;
     fs::create_directories(root);
+    for (const auto& entry : fs::directory_iterator(root))
+      if (entry.path().filename().string().rfind(kRetiredPrefix, 0) == 0) fs::remove_all(entry.path());
     fs::remove_all(root / (kPartialPrefix + std::string(name)));
     fs::create_directories(root / (kPartialPrefix + std::string(name)));
   }
@@ -142,14 +156,14 @@ void commitCheckpoint(const CheckpointDraft& draft, const LoopState& loop,
       out.close();
       if (!out) throw std::runtime_error("cannot write " + draft.partial.loop);
     }
-    fs::remove_all(draft.final.folder);
+    retire(draft.final.folder);
     fs::rename(draft.partial.folder, draft.final.folder);
     // Keep the newest two complete checkpoints.
     std::vector<fs::path> complete;
     for (const auto& entry : fs::directory_iterator(fs::path(draft.final.folder).parent_path()))
       if (entry.path().filename().string().rfind(kStepPrefix, 0) == 0) complete.push_back(entry.path());
     std::sort(complete.begin(), complete.end());
-    for (std::size_t k = 0; k + 2 < complete.size(); ++k) fs::remove_all(complete[k]);
+    for (std::size_t k = 0; k + 2 < complete.size(); ++k) retire(complete[k]);
   }
   MPI_Barrier(comm);
 }

@@ -32,6 +32,12 @@ def kill_after(runs, case, out, rows):
         fail(f"the run ended (exit code {job.returncode}) before it was killed")
     subprocess.run(["pkill", "-KILL", "-f", out])  # mpirun and the ranks: each names the output folder
     job.wait(timeout=60)
+    deadline = time.time() + 30  # a rank may outlive mpirun briefly; look at the output only when all are gone
+    while subprocess.run(["pgrep", "-f", out], stdout=subprocess.DEVNULL).returncode == 0:
+        if time.time() > deadline:
+            fail(f"a process naming {out} is still alive 30 s after SIGKILL")
+        subprocess.run(["pkill", "-KILL", "-f", out])
+        time.sleep(0.1)
 
 
 def killed(runs, rows):
