@@ -98,7 +98,7 @@ def damping_matrix(masses):
 class Plan:
     """What one variant runs: its parcels, DEM step and LIGGGHTS variables, for a fine bed of nbeads."""
 
-    def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, fill_top):
+    def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, height, fill_top):
         self.name = name
         self.description, self.diameters, self.mode, self.scaling = VARIANTS[name]
         self.masses = [sphere_mass(d) for d in self.diameters]
@@ -112,10 +112,10 @@ class Plan:
         steps = math.ceil(STEPS_PER_CONTACT * gas_step / self.contact_time - 1e-9)
         self.dem_step = gas_step / steps
         self.steps_per_gas_step = steps
-        self.fill_top = self.insertion_top(width, fill_top)
+        self.fill_top = self.insertion_top(width, height, fill_top)
         self.variables = {} if name == "fine" else self.coarse_variables(fine_dem_step, settle_steps, fill_top)
 
-    def insertion_top(self, width, fine_top):
+    def insertion_top(self, width, height, fine_top):
         """Top of the insertion region at which the solid volume over the volume the centres of the largest
         parcels can reach equals the fine bed's (the solid volume is the same)."""
         def reach(radius):  # cross-section the centres can reach, and their lowest height
@@ -123,9 +123,9 @@ class Plan:
                     FILL_BOTTOM + 2 * radius)
         (fine_area, fine_low), (area, low) = reach(max(BEAD_DIAMETERS) / 2), reach(max(self.diameters) / 2)
         top = low + (fine_top - fine_low) * fine_area / area if area > 0 else math.inf
-        if top > 0.6:
+        if top + max(self.diameters) > height:
             sys.exit(f"{self.name}: parcels of {max(self.diameters) * 1e3:g} mm need an insertion region up to "
-                     f"{top:.3g} m in this bed; allowed: up to 0.6 m of the 0.7 m box")
+                     f"{top:.3g} m in this bed; allowed: up to one parcel diameter below the {height:g} m box")
         return top
 
     def coarse_variables(self, fine_dem_step, settle_steps, fine_top):
@@ -310,7 +310,8 @@ def main():
     check_script(os.path.join(args.case, config["liggghts"]["script"]))
     variables, times = config["liggghts"]["variables"], config["time"]
     plans = [Plan(n, int(variables["nbeads"]), times["gas_step"], times["dem_step"], int(variables["settle_steps"]),
-                  float(variables["width"]), float(variables["fill_top"])) for n in names]
+                  float(variables["width"]), float(variables["height"]), float(variables["fill_top"]))
+             for n in names]
     for plan in plans:
         print(f"{plan.name}: {plan.parcels} parcels of {plan.diameters[0] * 1e3:g} / {plan.diameters[1] * 1e3:g} mm, "
               f"np {plan.np[0]:.4g} / {plan.np[1]:.4g}; DEM step {plan.dem_step:.6g} s = gas step / "

@@ -35,17 +35,19 @@ VARIANTS = {
     "no_wall_friction": ("bead-wall friction 0 instead of 0.09", {}, {"wall_friction": "0.0"}),
     "gidaspow": ("Gidaspow drag instead of Wen-Yu", {"coupling.drag": "Gidaspow"}, {}),
     "beetstra": ("Beetstra (BVK) drag instead of Wen-Yu", {"coupling.drag": "BeetstraVanDerHoefKuipers"}, {}),
-    "cells_z_188": ("188 gas cells over the height (3.7 mm) instead of 94 (7.4 mm)", {"mesh.cells": [47, 5, 188]}, {}),
-    "cells_z_219": ("219 gas cells over the height (3.2 mm: cubic cells, as the paper says) instead of 94",
-                    {"mesh.cells": [47, 5, 219]}, {}),
-    "cells_z_219_gidaspow": ("cubic cells (219 over the height) and Gidaspow drag",
-                             {"mesh.cells": [47, 5, 219], "coupling.drag": "Gidaspow"}, {}),
+    "column_0.7m": ("the experiment's 0.7 m column with the same 94 cells over its height (3.2 x 3.0 x 7.4 mm cells: "
+                    "the mesh shipped before 2026-12-03) instead of 0.3 m (cubic 3.2 mm cells)",
+                    {"mesh.lengths": [0.15, 0.015, 0.7]}, {"height": "0.7"}),
+    "column_0.7m_188": ("the 0.7 m column with 188 gas cells over the height (3.7 mm)",
+                        {"mesh.lengths": [0.15, 0.015, 0.7], "mesh.cells": [47, 5, 188]}, {"height": "0.7"}),
+    "column_0.7m_219": ("the 0.7 m column with 219 gas cells over the height (cubic 3.2 mm cells, as in the 0.3 m "
+                        "column)", {"mesh.lengths": [0.15, 0.015, 0.7], "mesh.cells": [47, 5, 219]}, {"height": "0.7"}),
     "velocity_0.8": ("inlet 0.8 m/s instead of 1.1: the settled bed (a_g 0.37, denser than the experiment's) has a "
                      "lower U_mf, so this keeps about the experiment's U/U_mf",
                      {"boundaries.zmin": {"type": "velocity_inlet", "superficial_velocity": [0, 0, 0.8]}}, {}),
     "centroid": ("centroid kernel instead of Gaussian", {"coupling.kernel": {"type": "centroid"}}, {}),
-    "kernel_cell_axes": ("Gaussian h = the cell length per axis (7.4 mm vertically, 3.2 mm across; the only kernel "
-                         "before 2026-12-02) instead of the cube root of the cell volume (4.1 mm along every axis)",
+    "kernel_cell_axes": ("Gaussian h = the cell length per axis (the only kernel before 2026-12-02; on the cubic cells "
+                         "of the 0.3 m column 3.2 / 3.0 / 3.2 mm) instead of the cube root of the cell volume (3.13 mm)",
                          {"coupling.kernel": {"type": "gaussian", "sharpness": 1.0, "radius": 2,
                                               "length_scale": "cell_axes"}}, {}),
     "kernel_wide": ("Gaussian sharpness 0.5 (wider)",

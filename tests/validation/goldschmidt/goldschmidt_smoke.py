@@ -9,7 +9,7 @@ gas fraction in (0, 1] for all 7,520 cells; and the bed pressure drop balances t
 momentum. 0.1 s is the start-up (the gas lifts the packed bed as a plug, which then slows down), so the
 pressure drop is not yet its time average; the check is the impulse balance of the bed,
     integral of (dp - rho_g g H - W/A + F_walls/A) dt = (M/A) (v(T) - v(0)),
-dp the pressure drop from the plate to H = 0.4 m (which also holds the gas's own weight), W the buoyant
+dp the pressure drop from the plate to H = 0.29 m (which also holds the gas's own weight), W the buoyant
 weight of all beads, v = d<z>/dt of their mass-weighted mean height, F_walls the vertical contact force of
 all walls on the beads (the plate; friction in the 15 mm slot), which the test has LIGGGHTS store and
 print every gas step,
@@ -31,7 +31,7 @@ from parcelflow_runs import CASES, fail, run_case  # noqa: E402
 
 CELLS = 16 * 5 * 94
 GAS_STEP, DEM_STEP, MONITOR_INTERVAL, END, G = 5e-4, 5e-4 / 12, 0.0025, 0.1, 9.81
-WIDTH, DEPTH, RHO_G, MONITORED_HEIGHT = 0.05, 0.015, 1.2, 0.4
+WIDTH, DEPTH, RHO_G, MONITORED_HEIGHT = 0.05, 0.015, 1.2, 0.29
 
 
 def edit(case):
