@@ -6,7 +6,10 @@
 
 #include <cstdio>
 
+#include "cfd/mpi_io_defaults.hpp"
+
 int main(int argc, char** argv) {
+  parcelflow::cfd::preferRomioForMpiIo();  // as the parcelflow program does
   MPI_Init(&argc, &argv);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   ::testing::InitGoogleTest(&argc, argv);

@@ -11,6 +11,7 @@
 
 #include "cfd/config_error.hpp"
 #include "cfd/internal_error.hpp"
+#include "cfd/mpi_io_defaults.hpp"
 #include "blowup_guard.h"
 #include "command_line.h"
 #include "contact_time_check.h"
@@ -114,6 +115,7 @@ int main(int argc, char** argv) {
   // `parcelflow dem` stops on a signal as the stock `liggghts` binary does; a coupled run installs its own
   // handlers (run/stop_signal.h).
   if (cl.action == pc::CommandLine::Action::dem) pc::LiggghtsInstance::installSignalHandlers();
+  parcelflow::cfd::preferRomioForMpiIo();
   MPI_Init(&argc, &argv);
   const int status = cl.action == pc::CommandLine::Action::run ? runCase(cl) : runDem(cl);
   MPI_Finalize();

@@ -2,7 +2,9 @@
 every few steps, three times at different moments: monitors.csv holds only complete rows, every HDF5 file in
 the output folder opens with h5py (a file is written as NAME.partial and renamed once complete), every file
 an XDMF index lists exists and opens, the complete checkpoints are readable, and the run continues from the
-newest of them."""
+newest of them. It runs with the named semaphore that Open MPI's OMPIO takes to open a file called
+gas.h5.partial present and taken, as a killed run leaves it: no run may wait on it (cfd/mpi_io_defaults.hpp)."""
+import ctypes
 import glob
 import os
 import subprocess
@@ -23,10 +25,13 @@ def kill_after(runs, case, out, rows):
     command = runs.launcher + [runs.parcelflow, "run", case, "--output", out, "--end", repr(2000 * GAS_STEP)]
     job = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     csv = os.path.join(out, "monitors.csv")
-    deadline = time.time() + 300
-    while time.time() < deadline and job.poll() is None:
+    deadline = time.time() + 120
+    while job.poll() is None:
         if os.path.exists(csv) and sum(1 for _ in open(csv)) > rows:
             break
+        if time.time() > deadline:
+            subprocess.run(["pkill", "-KILL", "-f", out])
+            fail(f"the run did not write {rows} monitor rows within 120 s (it hangs)")
         time.sleep(0.05)
     if job.poll() is not None:
         fail(f"the run ended (exit code {job.returncode}) before it was killed")
@@ -64,12 +69,23 @@ def killed(runs, rows):
            runs.run(case, "--restart", checkpoints[-1], output=out, end=(step + 5) * GAS_STEP), 0, "done:")
 
 
+def taken_ompio_semaphore():
+    """Creates /dev/shm/sem.OMPIO_gas.h5.partial with value 0 unless it exists; returns an undo function."""
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.sem_open.restype = ctypes.c_void_p
+    name = b"/OMPIO_gas.h5.partial"
+    made = libc.sem_open(name, os.O_CREAT | os.O_EXCL, 0o644, 0) not in (None, ctypes.c_void_p(-1).value)
+    return (lambda: libc.sem_unlink(name)) if made else (lambda: None)
+
+
 def main():
     runs = Runs(sys.argv)
+    undo = taken_ompio_semaphore()
     try:
         for rows in (15, 32, 49):
             killed(runs, rows)
     finally:
+        undo()
         runs.close()
     print("PASS")
 
