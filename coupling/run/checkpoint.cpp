@@ -30,7 +30,7 @@ const char* const kRetiredPrefix = ".retired_";
 
 // Deletes a checkpoint folder so that no half-deleted folder keeps a complete checkpoint's name: a kill
 // during remove_all would otherwise leave step_<N> without gas.h5. The rename is atomic; what a kill leaves
-// of a .retired_ folder is removed by the next checkpoint.
+// of a .retired_ folder is removed when the next checkpoint is committed.
 void retire(const fs::path& folder) {
   if (!fs::exists(folder)) return;
   const fs::path retired = folder.parent_path() / (kRetiredPrefix + folder.filename().string());
@@ -100,8 +100,6 @@ CheckpointDraft beginCheckpoint(const std::string& output_folder, long step, MPI
     std::snprintf(tag, sizeof tag, "%ld-%08x%08x", step, random(), random());
     id = tag;
     fs::create_directories(root);
-    for (const auto& entry : fs::directory_iterator(root))
-      if (entry.path().filename().string().rfind(kRetiredPrefix, 0) == 0) fs::remove_all(entry.path());
     fs::remove_all(root / (kPartialPrefix + std::string(name)));
     fs::create_directories(root / (kPartialPrefix + std::string(name)));
   }
@@ -158,10 +156,14 @@ void commitCheckpoint(const CheckpointDraft& draft, const LoopState& loop,
     }
     retire(draft.final.folder);
     fs::rename(draft.partial.folder, draft.final.folder);
-    // Keep the newest two complete checkpoints.
-    std::vector<fs::path> complete;
-    for (const auto& entry : fs::directory_iterator(fs::path(draft.final.folder).parent_path()))
-      if (entry.path().filename().string().rfind(kStepPrefix, 0) == 0) complete.push_back(entry.path());
+    // Keep the newest two complete checkpoints; remove what a kill left of retired ones.
+    std::vector<fs::path> complete, leftovers;
+    for (const auto& entry : fs::directory_iterator(fs::path(draft.final.folder).parent_path())) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind(kStepPrefix, 0) == 0) complete.push_back(entry.path());
+      if (name.rfind(kRetiredPrefix, 0) == 0) leftovers.push_back(entry.path());
+    }
+    for (const auto& folder : leftovers) fs::remove_all(folder);
     std::sort(complete.begin(), complete.end());
     for (std::size_t k = 0; k + 2 < complete.size(); ++k) retire(complete[k]);
   }

@@ -5,6 +5,7 @@ an XDMF index lists exists and opens, the complete checkpoints are readable, and
 newest of them. It runs with the named semaphore that Open MPI's OMPIO takes to open a file called
 gas.h5.partial present and taken, as a killed run leaves it: no run may wait on it (cfd/mpi_io_defaults.hpp)."""
 import ctypes
+import errno
 import glob
 import os
 import subprocess
@@ -74,8 +75,11 @@ def taken_ompio_semaphore():
     libc = ctypes.CDLL(None, use_errno=True)
     libc.sem_open.restype = ctypes.c_void_p
     name = b"/OMPIO_gas.h5.partial"
-    made = libc.sem_open(name, os.O_CREAT | os.O_EXCL, 0o644, 0) not in (None, ctypes.c_void_p(-1).value)
-    return (lambda: libc.sem_unlink(name)) if made else (lambda: None)
+    if libc.sem_open(name, os.O_CREAT | os.O_EXCL, 0o644, 0) is not None:  # SEM_FAILED is NULL in glibc
+        return lambda: libc.sem_unlink(name)
+    if ctypes.get_errno() != errno.EEXIST:  # without it the test would not test the hang
+        fail(f"cannot create the semaphore {name.decode()}: {os.strerror(ctypes.get_errno())}")
+    return lambda: None
 
 
 def main():
