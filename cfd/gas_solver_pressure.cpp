@@ -110,7 +110,7 @@ void GasSolver::correctPressure(double dt, bool firstCorrector) {
     report_.pressurePreconditionerBuilt = pPrecond_.builtThisStep();
   }
   const SolveStats stats = pSolver_->pcg(pRgh_, rhs);
-  if (firstCorrector) pPrecond_.recordIterations(stats.iterations);
+  pPrecond_.recordIterations(stats.iterations);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
   if (plates) {
@@ -138,6 +138,7 @@ double GasSolver::addPlenumPressure(const ScalarField& plateCoeff, double inflow
   const int nOwned = m.nOwnedCells();
   ScalarField response(m.nLocalCells(), 0.0);
   const SolveStats stats = pSolver_->pcg(response, plateCoeff);
+  pPrecond_.recordIterations(stats.iterations);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
   double num = 0.0, den = 0.0;
