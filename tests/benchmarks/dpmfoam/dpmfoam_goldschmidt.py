@@ -70,7 +70,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--parcelflow", required=True)
     parser.add_argument("--ranks", type=int, default=1)
-    parser.add_argument("--time", type=float, default=0.004, help="simulated seconds from t = 0")
+    parser.add_argument("--time", type=float, default=0.03, help="simulated seconds from t = 0 (0.03: the bed has landed)")
     parser.add_argument("--mpiexec", nargs=argparse.REMAINDER, default=["mpirun"])
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
