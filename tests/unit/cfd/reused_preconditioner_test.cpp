@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "cfd/config_error.hpp"
@@ -31,6 +30,20 @@ double maxRelativeDifference(const Mesh& m, const ScalarField& x, const ScalarFi
     scale = std::max(scale, std::abs(reference[c]));
   }
   return m.max(diff) / m.max(scale);
+}
+
+// Runs one step per entry of `solvesPerStep` (the PCG iterations of each of its solves) and returns
+// which steps built the preconditioner: 'B' built, '.' kept.
+std::string buildPattern(PreconditionerType type, int maxSteps, const LduMatrix& A,
+                         const std::vector<std::vector<int>>& solvesPerStep) {
+  ReusedPreconditioner reused(type, maxSteps);
+  std::string built;
+  for (const auto& solves : solvesPerStep) {
+    reused.forStep(A);
+    built += reused.builtThisStep() ? 'B' : '.';
+    for (int iterations : solves) reused.recordIterations(iterations);
+  }
+  return built;
 }
 }  // namespace
 
@@ -60,38 +73,16 @@ TEST(ReusedPreconditioner, StalePreconditionerGivesTheSameSolution) {
 TEST(ReusedPreconditioner, RebuiltAfterMaxStepsOrWhenExcessIterationsPayForABuild) {
   const Mesh m = bedMesh();
   const PressureProblem p(m);
-  ReusedPreconditioner reused(PreconditionerType::BlockCholesky, 3);
-  std::string built;
-  for (int step = 0; step < 7; ++step) {
-    reused.forStep(p.A);
-    built += reused.builtThisStep() ? 'B' : '.';
-    reused.recordIterations(5);
-  }
-  EXPECT_EQ(built, "B..B..B");
+  EXPECT_EQ(buildPattern(PreconditionerType::BlockCholesky, 3, p.A, std::vector<std::vector<int>>(7, {5})),
+            "B..B..B");
   // A block_cholesky build costs 30 iterations. Fresh 5: 20 and 20 cost 15 + 15 = 30 beyond it, so the
   // next step rebuilds; 19 and 20 cost 29 and keep it.
-  for (const auto& [iterations, expected] :
-       std::vector<std::pair<std::vector<int>, std::string>>{{{5, 20, 20, 5}, "B..B"}, {{5, 19, 20, 5}, "B..."}}) {
-    ReusedPreconditioner growing(PreconditionerType::BlockCholesky, 100);
-    built.clear();
-    for (int its : iterations) {
-      growing.forStep(p.A);
-      built += growing.builtThisStep() ? 'B' : '.';
-      growing.recordIterations(its);
-    }
-    EXPECT_EQ(built, expected);
-  }
+  EXPECT_EQ(buildPattern(PreconditionerType::BlockCholesky, 100, p.A, {{5}, {20}, {20}, {5}}), "B..B");
+  EXPECT_EQ(buildPattern(PreconditionerType::BlockCholesky, 100, p.A, {{5}, {19}, {20}, {5}}), "B...");
   // Each solve of a step is held against the same solve of the build step (BoomerAMG: a build costs 20):
   // first solves 10, 10, 10 and second solves 4, 14, 14 cost 10 per step, so the fourth step rebuilds.
-  ReusedPreconditioner twoSolves(PreconditionerType::BoomerAmg, 100);
-  built.clear();
-  for (int step = 0; step < 4; ++step) {
-    twoSolves.forStep(p.A);
-    built += twoSolves.builtThisStep() ? 'B' : '.';
-    twoSolves.recordIterations(10);
-    twoSolves.recordIterations(step == 0 ? 4 : 14);
-  }
-  EXPECT_EQ(built, "B..B");
+  EXPECT_EQ(buildPattern(PreconditionerType::BoomerAmg, 100, p.A, {{10, 4}, {10, 14}, {10, 14}, {10, 14}}),
+            "B..B");
 }
 
 TEST(ReusedPreconditioner, ReuseIsAPressureSetting) {
