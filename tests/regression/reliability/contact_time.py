@@ -70,7 +70,8 @@ def stops_before_settling(runs):
     command = runs.launcher + [os.path.abspath(runs.parcelflow), "dem", "column.in", "-log", "none"]
     for name, value in variables.items():
         command += ["-var", name, value]
-    done = subprocess.run(command, cwd=case, capture_output=True, text=True, errors="replace", timeout=300)
+    done = subprocess.run(command, cwd=case, capture_output=True, text=True, errors="replace", timeout=300,
+                          env=runs.env)
     text = expect(f"dem: timestep {step:g} s", (done.returncode, done.stdout + done.stderr, None), 2,
                   "error in script 'column.in': timestep", "at the start of the run at step 1", "t_c/10")
     if "Lost atoms" in text:

@@ -24,7 +24,7 @@ EVERY = {"monitor_interval": GAS_STEP, "fields_interval": GAS_STEP, "parcels_int
 def kill_after(runs, case, out, rows):
     """Starts the run and kills it with SIGKILL once monitors.csv has `rows` rows."""
     command = runs.launcher + [runs.parcelflow, "run", case, "--output", out, "--end", repr(2000 * GAS_STEP)]
-    job = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    job = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=runs.env)
     csv = os.path.join(out, "monitors.csv")
     deadline = time.time() + 120
     while job.poll() is None:

@@ -91,7 +91,7 @@ def bounded_run(runs, case):
     command = runs.launcher + [runs.parcelflow, "run", case, "--output", output, "--end", repr(END)]
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                                errors="replace", start_new_session=True,
-                               env=dict(os.environ, OMPI_MCA_odls_base_sigkill_timeout="0"))
+                               env=dict(runs.env, OMPI_MCA_odls_base_sigkill_timeout="0"))
     try:
         text, _ = process.communicate(timeout=TIMEOUT)
         return process.returncode, text

@@ -23,6 +23,10 @@ class Runs:
         self.launcher = [argv[2]] + argv[4:] + ["-np", argv[3]]
         self.work = tempfile.mkdtemp(prefix="pf_reliability_")
         self.count = 0
+        # Every launch's environment: Open MPI's session folder (TMPDIR/ompi.HOST.UID/pid.N) inside work, since
+        # an mpirun killed with SIGKILL (killed_run, a timeout) cannot remove it; close() does. Other launchers
+        # ignore the variable.
+        self.env = dict(os.environ, OMPI_MCA_orte_tmpdir_base=self.work)
 
     def case(self, edit=lambda s: None, script=lambda text: text):
         """A tiny column with edit(settings) applied to case.yaml and script(text) to column.in."""
@@ -51,7 +55,8 @@ class Runs:
         if end is not None:
             command += ["--end", repr(end)]
         try:
-            done = subprocess.run(command, capture_output=True, text=True, errors="replace", timeout=timeout)
+            done = subprocess.run(command, capture_output=True, text=True, errors="replace", timeout=timeout,
+                                  env=self.env)
         except subprocess.TimeoutExpired:
             fail(f"{' '.join(command)} did not end within {timeout} s")
         return done.returncode, done.stdout + done.stderr, output
