@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -157,6 +158,8 @@ void CoupledRun::initialize() {
   kernel_options.gaussianRadius = cs.coupling.kernel.radius;
   kernel_options.gaussianIsotropic = cs.coupling.kernel.length_scale == "cell_volume";
   for (int d = 0; d < 3; ++d) kernel_options.gaussianSpacing[d] = grid.spacing[d];
+  kernel_options.gaussianParcelFactor = cs.coupling.kernel.parcel_scale;
+  kernel_options.gaussianReflectAtFaces = cs.coupling.kernel.boundary == "reflect";
   DragLawContext drag_context;  // per-case constants of the filtered law (the others ignore them)
   drag_context.filterSize = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
   drag_context.gravity = s.case_def.gas.gas.gravity.norm();
@@ -169,8 +172,14 @@ void CoupledRun::initialize() {
   s.dem->start(checkpoint ? checkpoint->paths.dem : std::string());
   s.dem_steps = cs.time.demStepsPerGasStep();
   s.loop.initial_parcels = s.dem->parcels().globalCount();
+  KernelReach kernel_reach;
+  if (cs.coupling.kernel.type == GaussianKernel::typeName)  // h of the cell_volume length scale
+    kernel_reach.length = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
+  kernel_reach.parcel_scale = cs.coupling.kernel.parcel_scale;
+  kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
+                                            grid.spacing[2] * grid.cells[2]});
   s.warnings = std::make_unique<RunWarnings>(MPI_COMM_WORLD, mesh, *s.owners, s.loop.initial_parcels,
-                                             s.case_def.gas.solver.pressure.absTolerance);
+                                             s.case_def.gas.solver.pressure.absTolerance, kernel_reach);
   s.guard = std::make_unique<BlowupGuard>(MPI_COMM_WORLD, cs.coupling.guards, s.loop.initial_parcels);
   s.loop.next_checkpoint = cs.output.checkpoint_interval;  // the other output times start at 0
   if (!checkpoint) clearEarlierRun(s.output.string(), MPI_COMM_WORLD);

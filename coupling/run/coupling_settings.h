@@ -29,6 +29,12 @@ struct KernelSettings {
   // h: "cell_volume" (the cube root of the cell volume: paper eq. 8's one length scale of the cell) or
   // "cell_axes" (the cell's length along each axis: on tall cells it smooths vertically over more metres)
   std::string length_scale = "cell_volume";
+  // lambda: a parcel of collision diameter D wider than lambda D > h is spread over h_p = lambda D instead
+  // (gaussian only; 0: h for every parcel, the paper's eq. 8 as written)
+  double parcel_scale = 0.0;
+  // at the faces of the background box: "truncate" (the part beyond a face is dropped before the weights
+  // are renormalised) or "reflect" (it is folded back onto the mirror cells: image parcels)
+  std::string boundary = "truncate";
 };
 
 // Limits beyond which a run counts as diverged (run/blowup_guard.h); the defaults are far above what the

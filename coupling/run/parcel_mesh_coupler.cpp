@@ -36,7 +36,11 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
 
 TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   parcels_ = parcels;
-  const TransferStats stats = buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_);
+  // collision diameter D = dp np^(1/3) in both parcel modes (constant np, and constant D with np = (D/dp)^3)
+  diameters_.resize(parcels.size);
+  for (std::size_t p = 0; p < parcels.size; ++p) diameters_[p] = parcels.dp[p] * std::cbrt(parcels.np[p]);
+  const TransferStats stats =
+      buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_, diameters_.data());
   // Every fluid cell of the box is exchanged (cells no window reaches carry zeros): the box is this
   // rank's parcels' neighbourhood, so it is about the cells the stencils touch.
   touched_.clear();

@@ -100,6 +100,7 @@ class ParcelMeshCoupler {
   FluidCells fluid_;  // background cells some rank owns
 
   ParcelBatch parcels_;
+  std::vector<double> diameters_;       // this step's collision diameters, for a kernel that widens for them
   BoxStencils stencils_;                // this step's stencils
   std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
   std::vector<long> box_of_touched_;    // their box index

@@ -1,13 +1,19 @@
 #include "run_warnings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace parcelflow::coupling {
 
 RunWarnings::RunWarnings(MPI_Comm comm, const cfd::Mesh& mesh, const CellOwnerMap& owners, long parcels,
-                         double absolute_tolerance)
-    : comm_(comm), mesh_(mesh), owners_(owners), parcels_(parcels), absolute_tolerance_(absolute_tolerance) {
+                         double absolute_tolerance, KernelReach kernel_reach)
+    : comm_(comm),
+      mesh_(mesh),
+      owners_(owners),
+      parcels_(parcels),
+      absolute_tolerance_(absolute_tolerance),
+      kernel_reach_(kernel_reach) {
   MPI_Comm_rank(comm, &rank_);
 }
 
@@ -38,9 +44,24 @@ void RunWarnings::checkOutsideMesh(const ParcelBatch& batch, const std::vector<l
                 total == parcels ? "all: " : "", total, parcels, example[0], example[1], example[2], example[3]);
 }
 
+void RunWarnings::reportParcelSizes(const ParcelBatch& batch) {
+  double largest[2] = {0.0, 0.0};  // D, np
+  for (std::size_t p = 0; p < batch.size; ++p) {
+    largest[0] = std::max(largest[0], batch.dp[p] * std::cbrt(batch.np[p]));
+    largest[1] = std::max(largest[1], batch.np[p]);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, largest, 2, MPI_DOUBLE, MPI_MAX, comm_);
+  if (rank_ != 0) return;
+  for (const std::string& line : parcelSizeReport({largest[0], largest[1]}, kernel_reach_))
+    std::printf("%s\n", line.c_str());
+}
+
 void RunWarnings::afterGasStep(const ParcelBatch& batch, const std::vector<long>& ids,
                                const cfd::StepReport& report, long parcels, double time, long step) {
-  if (first_) checkOutsideMesh(batch, ids, parcels_);
+  if (first_) {
+    reportParcelSizes(batch);
+    checkOutsideMesh(batch, ids, parcels_);
+  }
   first_ = false;
   if (parcels < parcels_ && rank_ == 0)
     std::printf("parcelflow: warning: t = %g s (step %ld): %ld parcels lost in the last DEM advance, %ld left%s\n",

@@ -1,5 +1,6 @@
 // Warnings printed on the terminal at the step where a problem starts, not only in the closing summary:
-// parcels whose centre is in no fluid cell (at the first coupling step), parcels lost (at the first step
+// coarse-grained parcels against the mesh and the bed (parcel_size_report.h) and parcels whose centre is in
+// no fluid cell (at the first coupling step), parcels lost (at the first step
 // after the DEM advance that lost them), pressure or momentum solves stopped at max_iterations (the first,
 // then every kUnconvergedEvery-th such step) and a pressure solve that did no iteration (its absolute
 // tolerance is above the residual). The coupled loop calls afterGasStep() once per step, on all ranks,
@@ -11,6 +12,7 @@
 #include "cfd/gas_solver.hpp"
 #include "cell_owner_map.h"
 #include "parcel_mesh_coupler.h"
+#include "parcel_size_report.h"
 #include "run_counters.h"
 
 namespace parcelflow::coupling {
@@ -20,7 +22,7 @@ class RunWarnings {
   static constexpr long kUnconvergedEvery = 100;
 
   RunWarnings(MPI_Comm comm, const cfd::Mesh& mesh, const CellOwnerMap& owners, long parcels,
-              double absolute_tolerance);
+              double absolute_tolerance, KernelReach kernel_reach);
 
   // `batch`: the parcels at the start of the step (their ids in `ids`); time and step at its end. Collective.
   void afterGasStep(const ParcelBatch& batch, const std::vector<long>& ids, const cfd::StepReport& report,
@@ -28,6 +30,7 @@ class RunWarnings {
 
  private:
   void checkOutsideMesh(const ParcelBatch& batch, const std::vector<long>& ids, long parcels);
+  void reportParcelSizes(const ParcelBatch& batch);
 
   MPI_Comm comm_;
   int rank_ = 0;
@@ -35,6 +38,7 @@ class RunWarnings {
   const CellOwnerMap& owners_;
   long parcels_;
   double absolute_tolerance_;
+  KernelReach kernel_reach_;
   bool first_ = true, warned_no_iterations_ = false;
   long unconverged_steps_ = 0;
 };

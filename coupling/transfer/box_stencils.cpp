@@ -49,7 +49,7 @@ double fluidSum(const Window& w, const FluidCells& fluid) {
 
 template <class Kernel>
 TransferStats buildWith(const Kernel& kernel, const BackgroundGrid& grid, const FluidCells& fluid, std::size_t n,
-                        const double* pos, BoxStencils& out) {
+                        const double* pos, const double* diameter, BoxStencils& out) {
   out.windows.resize(n);
   out.first.assign(n, -1);
   int lo[3] = {INT_MAX, INT_MAX, INT_MAX}, hi[3] = {INT_MIN, INT_MIN, INT_MIN};
@@ -57,7 +57,7 @@ TransferStats buildWith(const Kernel& kernel, const BackgroundGrid& grid, const 
   TransferStats stats;
   for (std::size_t p = 0; p < n; ++p) {
     Window& w = out.windows[p];
-    StencilResult r = kernel.window(grid, pos + 3 * p, isFluid, w);
+    StencilResult r = kernel.window(grid, pos + 3 * p, diameter ? diameter[p] : 0.0, isFluid, w);
     if (r != StencilResult::orphan) {
       const double sum = fluidSum(w, fluid);
       if (sum > 0.0) {
@@ -193,8 +193,8 @@ void withWidth(int ncomp, Loop&& loop) {
 }  // namespace
 
 TransferStats buildBoxStencils(const TransferKernel& kernel, const BackgroundGrid& grid, const FluidCells& fluid,
-                               std::size_t n, const double* pos, BoxStencils& out) {
-  return std::visit([&](const auto& k) { return buildWith(k, grid, fluid, n, pos, out); }, kernel);
+                               std::size_t n, const double* pos, BoxStencils& out, const double* diameter) {
+  return std::visit([&](const auto& k) { return buildWith(k, grid, fluid, n, pos, diameter, out); }, kernel);
 }
 
 void deposit(const BoxStencils& set, int ncomp, const double* q, double* boxQ) {

@@ -62,8 +62,10 @@ struct BoxStencils {
 };
 
 // Fills `out` with the windows of the n parcels at pos (interleaved xyz), renormalised over fluid cells.
+// diameter: the parcels' collision diameters, for a kernel that widens for large parcels (nullptr: none
+// is read, as for parcels of diameter 0).
 TransferStats buildBoxStencils(const TransferKernel& kernel, const BackgroundGrid& grid, const FluidCells& fluid,
-                               std::size_t n, const double* pos, BoxStencils& out);
+                               std::size_t n, const double* pos, BoxStencils& out, const double* diameter = nullptr);
 
 // boxQ[ncomp b + m] += w_pb q[ncomp p + m] over the box cells b of each parcel's window.
 void deposit(const BoxStencils& set, int ncomp, const double* q, double* boxQ);

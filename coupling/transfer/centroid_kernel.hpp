@@ -22,9 +22,10 @@ class CentroidKernel {
   int searchRadius() const { return r_; }
 
   // One cell with factor 1: the containing one if it is fluid (isFluid(i, j, k)), else the nearest
-  // fluid cell within +-searchRadius (fallback), else none (orphan).
+  // fluid cell within +-searchRadius (fallback), else none (orphan). The parcel's diameter is not read.
   template <class IsFluid>
-  StencilResult window(const BackgroundGrid& g, const double* x, const IsFluid& isFluid, Window& w) const {
+  StencilResult window(const BackgroundGrid& g, const double* x, double /*diameter*/, const IsFluid& isFluid,
+                       Window& w) const {
     int ic[3];
     bool inside = true;
     for (int d = 0; d < 3; ++d) {

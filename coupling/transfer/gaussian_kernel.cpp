@@ -25,12 +25,22 @@ GaussianKernel::GaussianKernel(double sharpness, int radius, const double (&spac
   PARCELFLOW_ASSERT(spacing[0] > 0.0 && spacing[1] > 0.0 && spacing[2] > 0.0,
                     "gaussian kernel: cell lengths must be > 0");
   const double h = std::cbrt(spacing[0] * spacing[1] * spacing[2]);
+  isotropicLength_ = h;
   for (int d = 0; d < 3; ++d) {
     // exactly a on cubic cells, whatever the rounding of the cube root
     const double ratio = spacing[0] == spacing[1] && spacing[1] == spacing[2] ? 1.0 : spacing[d] / h;
     axisA_[d] = sharpness * ratio * ratio;
     expMinus2a_[d] = std::exp(-2.0 * axisA_[d]);
   }
+}
+
+GaussianKernel::GaussianKernel(double sharpness, int radius, const double (&spacing)[3], bool isotropic,
+                               double parcelFactor, bool reflectAtFaces)
+    : GaussianKernel(isotropic ? GaussianKernel(sharpness, radius, spacing) : GaussianKernel(sharpness, radius)) {
+  PARCELFLOW_ASSERT(parcelFactor >= 0.0 && std::isfinite(parcelFactor),
+                    "gaussian kernel: parcel factor must be >= 0, got " + std::to_string(parcelFactor));
+  parcelFactor_ = parcelFactor;
+  reflect_ = reflectAtFaces;
 }
 
 double GaussianKernel::retainedMassFraction1D(double sharpness, int radius, double offset) {

@@ -10,9 +10,9 @@ std::vector<std::string> transferKernelNames() { return {GaussianKernel::typeNam
 
 TransferKernel makeTransferKernel(const std::string& name, const TransferKernelOptions& options) {
   if (name == GaussianKernel::typeName)
-    return options.gaussianIsotropic
-               ? GaussianKernel(options.gaussianSharpness, options.gaussianRadius, options.gaussianSpacing)
-               : GaussianKernel(options.gaussianSharpness, options.gaussianRadius);
+    return GaussianKernel(options.gaussianSharpness, options.gaussianRadius, options.gaussianSpacing,
+                          options.gaussianIsotropic, options.gaussianParcelFactor,
+                          options.gaussianReflectAtFaces);
   if (name == CentroidKernel::typeName) return CentroidKernel(options.centroidSearchRadius);
   std::string valid;
   for (const std::string& n : transferKernelNames()) valid += (valid.empty() ? "" : ", ") + n;

@@ -20,6 +20,10 @@ struct TransferKernelOptions {
   // h = the cube root of the cell volume (cells of gaussianSpacing) instead of the cell length per axis
   bool gaussianIsotropic = true;
   double gaussianSpacing[3] = {1.0, 1.0, 1.0};
+  // lambda: a parcel of collision diameter D is spread over at least h_p = lambda D (0: the cell's h only)
+  double gaussianParcelFactor = 0.0;
+  // the background's faces mirror the kernel (image parcels) instead of truncating it
+  bool gaussianReflectAtFaces = false;
   int centroidSearchRadius = 1;    // fallback search for the centroid kernel
 };
 

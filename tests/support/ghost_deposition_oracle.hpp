@@ -27,11 +27,11 @@ struct Stencil {
 // The stencil of a parcel at x for a concrete kernel; a cell is fluid if the lookup knows it.
 template <class Kernel, class LocalCell>
 StencilResult stencilOf(const Kernel& kernel, const BackgroundGrid& g, const double* x, const LocalCell& localCell,
-                        Stencil& s) {
+                        Stencil& s, double diameter = 0.0) {
   s.size = 0;
   Window w;
   const auto isFluid = [&](int i, int j, int k) { return localCell(i, j, k) >= 0; };
-  const StencilResult r = kernel.window(g, x, isFluid, w);
+  const StencilResult r = kernel.window(g, x, diameter, isFluid, w);
   if (r == StencilResult::orphan) return r;
   double sum = 0.0;
   for (int c = 0; c < w.n[2]; ++c)

@@ -39,6 +39,8 @@ TEST(CaseReader, ReadsValuesAndDefaults) {
   EXPECT_EQ(s.coupling.drag, "WenYu");
   EXPECT_EQ(s.coupling.kernel.type, "gaussian");
   EXPECT_EQ(s.coupling.kernel.length_scale, "cell_volume");
+  EXPECT_EQ(s.coupling.kernel.parcel_scale, 0.0);
+  EXPECT_EQ(s.coupling.kernel.boundary, "truncate");
   EXPECT_FALSE(s.monitors.has_bed_pressure_drop);
 }
 
@@ -48,6 +50,10 @@ TEST(CaseReader, ErrorsNameKeyValueAndAllowed) {
   expectMentions(errorOf("coupling: {kernel: {type: gaussian, radius: 9}}\n"), {"coupling.kernel.radius", "9"});
   expectMentions(errorOf("coupling: {kernel: {type: gaussian, length_scale: cube}}\n"),
                  {"coupling.kernel.length_scale", "cube", "cell_axes", "cell_volume"});
+  expectMentions(errorOf("coupling: {kernel: {type: gaussian, parcel_scale: -1}}\n"),
+                 {"coupling.kernel.parcel_scale", "-1", "[0, 4]"});
+  expectMentions(errorOf("coupling: {kernel: {type: gaussian, boundary: mirror}}\n"),
+                 {"coupling.kernel.boundary", "mirror", "truncate", "reflect"});
   expectMentions(errorOf("coupling: {gas_fraction_floor: 1.5}\n"), {"coupling.gas_fraction_floor", "1.5"});
   expectMentions(errorOf("monitors: {bed_pressure_drop: [0.05, 0.01]}\n"), {"monitors.bed_pressure_drop", "z_low < z_high"});
   expectMentions(errorOf("output: {monitor_interval: -1}\n"), {"output.monitor_interval", "-1"});

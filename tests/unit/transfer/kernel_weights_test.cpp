@@ -184,6 +184,134 @@ TEST(KernelWeights, GaussianWithTheCellVolumeLengthIsIsotropicInSpace) {
   for (int d = 0; d < 3; ++d) EXPECT_EQ(GaussianKernel(a, 2, cube).axisSharpness(d), a);
 }
 
+TEST(KernelWeights, GaussianOfAParcelWiderThanTheCellFollowsTheParcel) {
+  // parcel_scale lambda: a parcel of collision diameter D with lambda D > h is spread as exp(-a |dx|^2 /
+  // (lambda D)^2) over a window of ceil(R lambda D / h) cells per side, computed here from the distances.
+  const MaskedGrid g = makeGrid({24, 20, 16}, false);
+  double x[3];
+  offCentreParcel(g, x);
+  const double a = 1.0, lambda = 1.0;
+  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);  // 14.4 mm
+  const GaussianKernel kernel(a, 2, kTestSpacing, true, lambda);
+  const double D = 0.02;  // h_p / h = 1.39: R_p = ceil(2.77) = 3
+  Stencil s;
+  ASSERT_EQ(stencilOf(kernel, g.grid, x, g, s, D), StencilResult::ok);
+  ASSERT_EQ(s.size, 7 * 7 * 7);
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double r2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const double dx = g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d];
+      r2 += dx * dx;
+    }
+    expected[e] = std::exp(-a * r2 / (lambda * lambda * D * D));
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+
+  // a parcel with lambda D <= h, and any parcel with lambda = 0, gets the cell's kernel exactly
+  Stencil cell, small, off;
+  ASSERT_EQ(stencilOf(GaussianKernel(a, 2, kTestSpacing), g.grid, x, g, cell), StencilResult::ok);
+  ASSERT_EQ(stencilOf(kernel, g.grid, x, g, small, 0.99 * h / lambda), StencilResult::ok);
+  ASSERT_EQ(stencilOf(GaussianKernel(a, 2, kTestSpacing, true, 0.0), g.grid, x, g, off, D), StencilResult::ok);
+  ASSERT_EQ(small.size, cell.size);
+  ASSERT_EQ(off.size, cell.size);
+  for (int e = 0; e < cell.size; ++e) {
+    EXPECT_EQ(small.weight[e], cell.weight[e]);
+    EXPECT_EQ(off.weight[e], cell.weight[e]);
+  }
+}
+
+TEST(KernelWeights, CellAxesKernelWidensOnlyTheAxesNarrowerThanTheParcel) {
+  // length_scale cell_axes: h_d = the cell length per axis (10, 20, 15 mm). A 15 mm parcel widens x only
+  // (to 15 mm, window +-3), and leaves y (20 mm) and z (15 mm, not wider) as they were.
+  const MaskedGrid g = makeGrid({24, 20, 16}, false);
+  double x[3];
+  offCentreParcel(g, x);
+  const double D = 0.015;
+  Stencil s;
+  ASSERT_EQ(stencilOf(GaussianKernel(1.0, 2, kTestSpacing, false, 1.0), g.grid, x, g, s, D), StencilResult::ok);
+  ASSERT_EQ(s.size, 7 * 5 * 5);
+  const double length[3] = {D, kTestSpacing[1], kTestSpacing[2]};
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double exponent = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const double t = (g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d]) / length[d];
+      exponent += t * t;
+    }
+    expected[e] = std::exp(-exponent);
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+}
+
+TEST(KernelWeights, ParcelWindowIsCappedAtTheLargestRadius) {
+  // lambda D = 4 h would need +-8 cells; the window stops at maxRadius = 4 (9 cells), still summing to 1.
+  const MaskedGrid g = makeGrid({24, 20, 16}, false);
+  double x[3];
+  for (int d = 0; d < 3; ++d) x[d] = g.grid.cellCentre(d, 8) + kOffCentreShift[d] * g.grid.spacing[d];
+  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);
+  Stencil s;
+  ASSERT_EQ(stencilOf(GaussianKernel(1.0, 2, kTestSpacing, true, 1.0), g.grid, x, g, s, 4.0 * h), StencilResult::ok);
+  EXPECT_EQ(s.size, 9 * 9 * 9);
+  double sum = 0.0;
+  for (int e = 0; e < s.size; ++e) sum += s.weight[e];
+  EXPECT_NEAR(sum, 1.0, 1e-14);
+}
+
+TEST(KernelWeights, ReflectingFacesAddTheMirrorImagesWeights) {
+  // boundary: reflect. A parcel 0.3 cells above the lower x face: each cell's weight is the Gaussian of the
+  // parcel plus that of its image mirrored at the face, computed here from the distances; in the interior
+  // (no cell of the window beyond a face) the weights are those of the truncating kernel exactly.
+  const MaskedGrid g = makeGrid({24, 20, 16}, false);
+  const GaussianKernel reflecting(1.0, 2, kTestSpacing, true, 0.0, true), truncating(1.0, 2, kTestSpacing);
+  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);
+  double x[3];
+  offCentreParcel(g, x);
+  Stencil inner, innerTruncated;
+  ASSERT_EQ(stencilOf(reflecting, g.grid, x, g, inner), StencilResult::ok);
+  ASSERT_EQ(stencilOf(truncating, g.grid, x, g, innerTruncated), StencilResult::ok);
+  ASSERT_EQ(inner.size, innerTruncated.size);
+  for (int e = 0; e < inner.size; ++e) EXPECT_EQ(inner.weight[e], innerTruncated.weight[e]);
+
+  x[0] = g.grid.origin[0] + 0.3 * g.grid.spacing[0];
+  const double image = 2.0 * g.grid.origin[0] - x[0];
+  Stencil s;
+  ASSERT_EQ(stencilOf(reflecting, g.grid, x, g, s), StencilResult::ok);
+  ASSERT_EQ(s.size, 3 * 5 * 5);  // cells 0..2 in x: cells -1 and -2 folded onto 0 and 1
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double r2 = 0.0;
+    for (int d = 1; d < 3; ++d) r2 += std::pow(g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d], 2);
+    const int ix = g.ijkOf[s.cell[e]][0];
+    const double cx = g.grid.cellCentre(0, ix);
+    // the window is +-2 cells around cell 0: its cells -1 and -2 are the images of cells 0 and 1
+    expected[e] = std::exp(-(r2 + std::pow(cx - x[0], 2)) / (h * h)) +
+                  (ix <= 1 ? std::exp(-(r2 + std::pow(cx - image, 2)) / (h * h)) : 0.0);
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+}
+
+TEST(KernelWeights, ReflectingFacesFoldAWindowWiderThanTheBox) {
+  // 2 cells across, a window of +-4: cells beyond both faces fold back, repeatedly, and the weights
+  // still sum to 1 over the 2 cells.
+  const MaskedGrid g = makeGrid({24, 2, 16}, false);
+  const GaussianKernel kernel(1.0, 4, kTestSpacing, true, 0.0, true);
+  double x[3];
+  for (int d = 0; d < 3; ++d) x[d] = g.grid.cellCentre(d, d == 1 ? 0 : 8) + 0.2 * g.grid.spacing[d];
+  Stencil s;
+  ASSERT_EQ(stencilOf(kernel, g.grid, x, g, s), StencilResult::ok);
+  EXPECT_EQ(s.size, 9 * 2 * 9);
+  double sum = 0.0;
+  for (int e = 0; e < s.size; ++e) sum += s.weight[e];
+  EXPECT_NEAR(sum, 1.0, 1e-14);
+}
+
 TEST(KernelWeights, GatherOfLinearFieldInTheInterior) {
   // A linear field f = x (per axis) at cell centres, gathered at the parcel: exact at cell centres by
   // symmetry; elsewhere the truncated lattice Gaussian has a small bias sum w x_c - x_p. It is NOT zero

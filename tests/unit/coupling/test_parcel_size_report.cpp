@@ -1,0 +1,42 @@
+// The start-up report on coarse-grained parcels: silent for single particles, a description for parcels,
+// and a warning naming the ratio and the limit for each limit broken.
+#include <gtest/gtest.h>
+
+#include "parcel_size_report.h"
+
+namespace pc = parcelflow::coupling;
+
+namespace {
+
+bool mentions(const std::string& line, const std::string& what) { return line.find(what) != std::string::npos; }
+
+// The Goldschmidt bed's mesh: h = 4.15 mm, 15 mm deep.
+const pc::KernelReach kGoldschmidt{0.00415, 0.0, 0.015};
+
+}  // namespace
+
+TEST(ParcelSizeReport, SilentForSingleParticles) {
+  EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0}, kGoldschmidt).empty());
+}
+
+TEST(ParcelSizeReport, WarnsForParcelsWiderThanTheKernelAndTooFewAcross) {
+  // 5 mm parcels: D/h = 1.2 > 1 with parcel_scale 0, and 3 across the 15 mm depth < 6
+  const auto lines = pc::parcelSizeReport({0.005, 37.04}, kGoldschmidt);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_TRUE(mentions(lines[0], "D = 5 mm")) << lines[0];
+  EXPECT_TRUE(mentions(lines[1], "1.2 times the kernel length")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "limit 1")) << lines[1];
+  EXPECT_TRUE(mentions(lines[2], "3 parcels of D = 5 mm across")) << lines[2];
+  EXPECT_TRUE(mentions(lines[2], "limit 6")) << lines[2];
+}
+
+TEST(ParcelSizeReport, AWidenedKernelAndAWideBedAreWithinTheLimits) {
+  pc::KernelReach widened = kGoldschmidt;
+  widened.parcel_scale = 2.0;
+  widened.narrowest_extent = 0.03;  // 6 parcels across
+  const auto lines = pc::parcelSizeReport({0.005, 8.0}, widened);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(mentions(lines[0], "spread over parcel_scale D = 10 mm")) << lines[0];
+  // np 8 parcels of 3 mm (the np8 bed's small class alone): D/h = 0.72, 5 across: only the second limit
+  EXPECT_EQ(pc::parcelSizeReport({0.003, 8.0}, kGoldschmidt).size(), 2u);
+}
