@@ -59,8 +59,8 @@ RESTITUTION = 0.97                # every type pair
 FILL_TERMINAL_VELOCITY = 0.3      # m/s of the filling's viscous force, both classes
 FREE_STEPS = 1000                 # free settling steps after the filling (at the case's DEM step)
 FINE_PARCEL_ARGS = "mode constant_np np 1 scaling none"
-FILL_MARGIN, FILL_BOTTOM, DEPTH = 0.0013, 0.002, 0.015  # the insertion region: margin to the walls, bottom
-FILL_REGION = "region          fill block 0.0013 ${fill_x1} 0.0013 0.0137 0.002 ${fill_top} units box"
+FILL_MARGIN, FILL_BOTTOM = 0.0013, 0.002  # the insertion region: margin to the walls, bottom
+FILL_REGION = "region          fill block 0.0013 ${fill_x1} 0.0013 ${fill_y1} 0.002 ${fill_top} units box"
 GRAVITY = 9.81
 COARSE_DIAMETER = 5e-3            # parcel diameter of the d5mm variants
 STEPS_PER_CONTACT = 11
@@ -98,7 +98,7 @@ def damping_matrix(masses):
 class Plan:
     """What one variant runs: its parcels, DEM step and LIGGGHTS variables, for a fine bed of nbeads."""
 
-    def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, height, fill_top):
+    def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, depth, height, fill_top):
         self.name = name
         self.description, self.diameters, self.mode, self.scaling = VARIANTS[name]
         self.masses = [sphere_mass(d) for d in self.diameters]
@@ -112,14 +112,14 @@ class Plan:
         steps = math.ceil(STEPS_PER_CONTACT * gas_step / self.contact_time - 1e-9)
         self.dem_step = gas_step / steps
         self.steps_per_gas_step = steps
-        self.fill_top = self.insertion_top(width, height, fill_top)
+        self.fill_top = self.insertion_top(width, depth, height, fill_top)
         self.variables = {} if name == "fine" else self.coarse_variables(fine_dem_step, settle_steps, fill_top)
 
-    def insertion_top(self, width, height, fine_top):
+    def insertion_top(self, width, depth, height, fine_top):
         """Top of the insertion region at which the solid volume over the volume the centres of the largest
         parcels can reach equals the fine bed's (the solid volume is the same)."""
         def reach(radius):  # cross-section the centres can reach, and their lowest height
-            return ((width - 2 * FILL_MARGIN - 2 * radius) * (DEPTH - 2 * FILL_MARGIN - 2 * radius),
+            return ((width - 2 * FILL_MARGIN - 2 * radius) * (depth - 2 * FILL_MARGIN - 2 * radius),
                     FILL_BOTTOM + 2 * radius)
         (fine_area, fine_low), (area, low) = reach(max(BEAD_DIAMETERS) / 2), reach(max(self.diameters) / 2)
         top = low + (fine_top - fine_low) * fine_area / area if area > 0 else math.inf
@@ -309,8 +309,13 @@ def main():
     config = fine_config()
     check_script(os.path.join(args.case, config["liggghts"]["script"]))
     variables, times = config["liggghts"]["variables"], config["time"]
+    script = os.path.join(args.case, config["liggghts"]["script"])
+    depth = float(variables.get("depth", script_defaults(script)["depth"]))
+    if abs(depth - config["mesh"]["lengths"][1]) > 1e-9:
+        sys.exit(f"the bed's depth {depth:g} m (liggghts.variables.depth) differs from mesh.lengths[1] "
+                 f"{config['mesh']['lengths'][1]:g} m")
     plans = [Plan(n, int(variables["nbeads"]), times["gas_step"], times["dem_step"], int(variables["settle_steps"]),
-                  float(variables["width"]), float(variables["height"]), float(variables["fill_top"]))
+                  float(variables["width"]), depth, float(variables["height"]), float(variables["fill_top"]))
              for n in names]
     for plan in plans:
         print(f"{plan.name}: {plan.parcels} parcels of {plan.diameters[0] * 1e3:g} / {plan.diameters[1] * 1e3:g} mm, "
