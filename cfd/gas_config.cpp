@@ -32,11 +32,12 @@ GasConfig GasConfig::fromFile(const std::string& path) {
 
 GasConfig::GasConfig(const YAML::Node& root) {
   const YamlSection top(root, "");
+  top.allowAnyKeys();  // the case's reader checks the top-level keys: it knows the coupling layer's too
   settings_.mesh = readMesh(top.map("mesh"));
-  settings_.geometry = readGeometry(root);
+  settings_.geometry = readGeometry(top);
   settings_.gas = readGas(top.map("gas"));
   settings_.boundaries = readBoundaries(top.map("boundaries"));
-  settings_.inletRegions = readInletRegions(root);
+  settings_.inletRegions = readInletRegions(top);
   settings_.solver = top.has("solver") ? readSolver(top.map("solver")) : SolverSettings{};
 }
 
@@ -67,8 +68,7 @@ MeshSettings GasConfig::readMesh(const YamlSection& s) {
   return m;
 }
 
-Geometry GasConfig::readGeometry(const YAML::Node& root) {
-  const YamlSection top(root, "");
+Geometry GasConfig::readGeometry(const YamlSection& top) {
   if (!top.has("geometry")) return Geometry();
   return readShapeList(top, "geometry");
 }
@@ -100,9 +100,12 @@ GasProperties GasConfig::readGas(const YamlSection& s) {
 
 std::vector<BoundarySettings> GasConfig::readBoundaries(const YamlSection& s) {
   // Patch names are free here: the mesh decides which exist (checked when the solver is built).
+  s.allowAnyKeys();
   std::vector<BoundarySettings> out;
   for (const auto& name : s.keys()) {
     const YamlSection b = s.map(name);
+    // Every boundary key first (a misspelt `type` is named as such), then those of its type.
+    b.allowOnly({"type", "superficial_velocity", "ramp_time", "distributor_pressure_drop", "pressure", "slip"});
     BoundarySettings bc;
     bc.patch = name;
     const std::string type = b.word("type", std::nullopt, {"velocity_inlet", "pressure_outlet", "wall"});
@@ -130,8 +133,7 @@ std::vector<BoundarySettings> GasConfig::readBoundaries(const YamlSection& s) {
   return out;
 }
 
-std::vector<InletRegionSettings> GasConfig::readInletRegions(const YAML::Node& root) {
-  const YamlSection top(root, "");
+std::vector<InletRegionSettings> GasConfig::readInletRegions(const YamlSection& top) {
   std::vector<InletRegionSettings> out;
   if (!top.has("inlet_regions")) return out;
   for (const auto& item : top.listOfMaps("inlet_regions")) {

@@ -24,11 +24,11 @@ class GasConfig {
 
  private:
   static MeshSettings readMesh(const YamlSection& s);
-  static Geometry readGeometry(const YAML::Node& root);
+  static Geometry readGeometry(const YamlSection& top);
   static Geometry readShapeList(const YamlSection& parent, const std::string& key);
   static GasProperties readGas(const YamlSection& s);
   static std::vector<BoundarySettings> readBoundaries(const YamlSection& s);
-  static std::vector<InletRegionSettings> readInletRegions(const YAML::Node& root);
+  static std::vector<InletRegionSettings> readInletRegions(const YamlSection& top);
   static SolverSettings readSolver(const YamlSection& s);
   // reusable: the solver keeps its preconditioner over steps (the pressure solver), so the key
   // preconditioner_reuse is allowed.

@@ -1,8 +1,10 @@
 #include "yaml_section.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "config_error.hpp"
+#include "internal_error.hpp"
 #include "number_text.hpp"
 
 namespace parcelflow::cfd {
@@ -12,6 +14,41 @@ std::string joined(const std::vector<std::string>& words) {
   std::string out;
   for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
   return out;
+}
+
+// The fewest edits (insert, delete or replace a letter, swap two neighbours) that turn a into b.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+// The allowed name a misspelt key most likely meant: the nearest one, if at most a third of its letters (at
+// least one) need an edit; "" if none is that near.
+std::string closestName(const std::string& key, const std::vector<std::string>& allowed) {
+  std::string best;
+  std::size_t nearest = 0;
+  for (const auto& name : allowed) {
+    const std::size_t distance = editDistance(key, name);
+    if (distance <= std::max<std::size_t>(1, name.size() / 3) && (best.empty() || distance < nearest)) {
+      best = name;
+      nearest = distance;
+    }
+  }
+  return best;
+}
+
+// A value as one short line (a misspelt section's whole map would otherwise fill the message).
+std::string shortValue(std::string text) {
+  constexpr std::size_t kMaxLength = 60;
+  return text.size() > kMaxLength ? text.substr(0, kMaxLength - 3) + "..." : text;
 }
 }  // namespace
 
@@ -53,8 +90,16 @@ std::vector<std::string> YamlSection::keys() const {
   return out;
 }
 
+void YamlSection::allowAnyKeys() const { keysChecked_ = true; }
+
+bool YamlSection::present(const std::string& key) const {
+  PARCELFLOW_ASSERT(keysChecked_, "case.yaml: " + keyPath(key) + " is read before the keys of " +
+                                      (path_.empty() ? std::string("<root>") : path_) + " were checked (allowOnly)");
+  return has(key);
+}
+
 YAML::Node YamlSection::node(const std::string& key) const {
-  if (!has(key)) fail(key, "is required but missing");
+  if (!present(key)) fail(key, "is required but missing");
   return node_[key];
 }
 
@@ -71,15 +116,26 @@ void YamlSection::fail(const std::string& key, const std::string& what) const {
   throw ConfigError(msg + ": " + what);
 }
 
-void YamlSection::allowOnly(const std::vector<std::string>& keys) const {
-  if (!node_.IsMap()) return;
-  for (const auto& item : node_) {
-    const auto key = item.first.as<std::string>();
-    bool known = false;
-    for (const auto& k : keys) known = known || (k == key);
-    if (!known)
-      throw ConfigError("case.yaml: unknown key " + keyPath(key) + "; allowed here: " + joined(keys));
+void YamlSection::failUnknown(const std::vector<std::string>& unknown, const std::vector<std::string>& allowed) const {
+  const bool one = unknown.size() == 1;
+  std::string named, guess;
+  for (const auto& key : unknown) {
+    const std::string closest = closestName(key, allowed);
+    guess = closest.empty() ? "" : "did you mean " + closest + "?";
+    named += (named.empty() ? "" : ", ") + keyPath(key) + " (value " + shortValue(valueText(key)) +
+             (one || guess.empty() ? "" : "; " + guess) + ")";
   }
+  throw ConfigError("case.yaml: unknown key" + std::string(one ? " " : "s ") + named +
+                    (one ? " is" : " are") + " not allowed here; " + (one && !guess.empty() ? guess + " " : "") +
+                    "allowed here: " + joined(allowed));
+}
+
+void YamlSection::allowOnly(const std::vector<std::string>& keys) const {
+  keysChecked_ = true;
+  std::vector<std::string> unknown;
+  for (const auto& key : this->keys())
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) unknown.push_back(key);
+  if (!unknown.empty()) failUnknown(unknown, keys);
 }
 
 YamlSection YamlSection::map(const std::string& key) const {
@@ -102,7 +158,7 @@ std::vector<YamlSection> YamlSection::listOfMaps(const std::string& key) const {
 
 double YamlSection::number(const std::string& key, std::optional<double> fallback,
                            Range range) const {
-  if (!has(key)) {
+  if (!present(key)) {
     if (fallback) return *fallback;
     fail(key, "is required but missing (" + range.describe() + ")");
   }
@@ -119,7 +175,7 @@ double YamlSection::number(const std::string& key, std::optional<double> fallbac
 int YamlSection::integer(const std::string& key, std::optional<int> fallback, int lo, int hi) const {
   const std::string allowed =
       "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (!has(key)) {
+  if (!present(key)) {
     if (fallback) return *fallback;
     fail(key, "is required but missing (" + allowed + ")");
   }
@@ -142,7 +198,7 @@ std::string YamlSection::word(const std::string& key, std::optional<std::string>
 }
 
 std::string YamlSection::text(const std::string& key, std::optional<std::string> fallback) const {
-  if (!has(key)) {
+  if (!present(key)) {
     if (fallback) return *fallback;
     fail(key, "is required but missing");
   }
@@ -151,7 +207,7 @@ std::string YamlSection::text(const std::string& key, std::optional<std::string>
 }
 
 Vec3 YamlSection::vec3(const std::string& key, std::optional<Vec3> fallback, Range range) const {
-  if (!has(key)) {
+  if (!present(key)) {
     if (fallback) return *fallback;
     fail(key, "is required but missing (a list of 3 numbers)");
   }
@@ -208,10 +264,10 @@ std::string YamlSection::singleKey(const std::vector<std::string>& allowed) cons
   if (!node_.IsMap() || node_.size() != 1)
     throw ConfigError("case.yaml: " + path_ + ": must have exactly one key, one of: " +
                       joined(allowed));
+  keysChecked_ = true;
   const auto key = node_.begin()->first.as<std::string>();
-  for (const auto& a : allowed)
-    if (a == key) return key;
-  throw ConfigError("case.yaml: unknown key " + keyPath(key) + "; allowed here: " + joined(allowed));
+  if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) failUnknown({key}, allowed);
+  return key;
 }
 
 }  // namespace parcelflow::cfd

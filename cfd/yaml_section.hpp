@@ -2,6 +2,10 @@
 // Typed, range-checked access to one map of case.yaml. Every error is a ConfigError naming the full key
 // path (e.g. `gas.viscosity`), the offending value and what is allowed. The coupling layer can wrap its
 // own sub-nodes of the same file with it.
+//
+// A section's keys are checked before any of its values is read (allowOnly, singleKey or allowAnyKeys;
+// reading first is an internal error): a misspelt required key (`typ: wall`) is then reported as the unknown
+// key it is, with the closest allowed name, not as the required key missing.
 #include <yaml-cpp/yaml.h>
 
 #include <array>
@@ -38,8 +42,12 @@ class YamlSection {
   std::string keyPath(const std::string& key) const;
   bool has(const std::string& key) const;
   std::vector<std::string> keys() const;
-  // Rejects any key not listed (typos must not be ignored silently).
+  // Rejects any key not listed (typos must not be ignored silently), naming every unknown key with its
+  // value and the closest allowed name.
   void allowOnly(const std::vector<std::string>& keys) const;
+  // For maps whose keys are names the caller reads all of (patch names, LIGGGHTS variables) or are checked
+  // by another reader (the file's root).
+  void allowAnyKeys() const;
 
   YamlSection map(const std::string& key) const;
   std::vector<YamlSection> listOfMaps(const std::string& key) const;
@@ -57,10 +65,13 @@ class YamlSection {
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
  private:
+  bool present(const std::string& key) const;  // has(key), for reading it: the keys must have been checked
   YAML::Node node(const std::string& key) const;
   std::string valueText(const std::string& key) const;
+  [[noreturn]] void failUnknown(const std::vector<std::string>& unknown, const std::vector<std::string>& allowed) const;
   YAML::Node node_;
   std::string path_;
+  mutable bool keysChecked_ = false;
 };
 
 }  // namespace parcelflow::cfd

@@ -31,6 +31,7 @@ LiggghtsSettings readLiggghts(const YamlSection& s) {
   l.script = s.text("script", std::nullopt);
   if (s.has("variables")) {
     const YamlSection vars = s.map("variables");
+    vars.allowAnyKeys();  // the script's variable names
     for (const auto& name : vars.keys()) l.variables.emplace_back(name, vars.text(name, std::nullopt));
   }
   return l;

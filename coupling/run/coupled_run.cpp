@@ -39,6 +39,7 @@ struct CoupledRun::State {
   std::map<std::string, std::string> settings;  // the restart-relevant part of case.yaml
   int rank = 0;
   fs::path output;
+  std::unique_ptr<FolderLock> output_lock;  // released last, after everything that writes into the folder
 
   std::unique_ptr<cfd::GasSolver> gas;
   std::unique_ptr<CellOwnerMap> owners;
@@ -132,8 +133,8 @@ void CoupledRun::initialize() {
   if (checkpoint) checkOutputSeries(*checkpoint, s.output.string());
   // A continued run keeps the earlier runs' LIGGGHTS logs.
   const std::string log = checkpoint ? "log.liggghts.from_step_" + std::to_string(checkpoint->loop.step) : "log.liggghts";
-  prepareOutputFolder(s.output.string(), s.options.output_folder.empty() ? "output.folder" : "--output",
-                      MPI_COMM_WORLD);
+  s.output_lock = prepareOutputFolder(s.output.string(),
+                                      s.options.output_folder.empty() ? "output.folder" : "--output", MPI_COMM_WORLD);
   s.dem = std::make_unique<DemEngine>(MPI_COMM_WORLD, cs, s.options.case_folder, (s.output / log).string());
 
   s.gas = std::make_unique<cfd::GasSolver>(s.case_def.gas, MPI_COMM_WORLD);

@@ -1,10 +1,16 @@
 #include "output_folder.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <stdexcept>
+#include <system_error>
 #include <vector>
 
 #include "broadcast_text.h"
@@ -57,14 +63,58 @@ std::string moveEarlierRun(const fs::path& folder) {
          " to " + aside.string() + " (to continue a run use --restart instead)";
 }
 
+// "" when this run may write into `folder` (then `lock` holds it for the run), else the error to report.
+std::string claimFolder(const std::string& folder, const std::string& key, std::unique_ptr<FolderLock>& lock) {
+  const std::string problem = makeWritable(folder);
+  if (!problem.empty())
+    return cfd::ConfigError(key, folder + " (" + problem + ")", "a folder that can be created and written").what();
+  try {
+    lock = std::make_unique<FolderLock>(folder);
+  } catch (const std::system_error& e) {
+    return cfd::ConfigError(key, folder + " (cannot be locked: " + e.what() + ")",
+                            "a folder that can be written, on a file system with file locks (flock)")
+        .what();
+  }
+  if (lock->held()) return "";
+  const std::string holder = lock->holder().empty() ? "" : ", " + lock->holder() + ",";
+  return cfd::ConfigError(key, folder + " (another parcelflow run" + holder + " is writing there)",
+                          "a folder no other run is writing to: give another one, or wait until that run has ended")
+      .what();
+}
+
 }  // namespace
 
-void prepareOutputFolder(const std::string& folder, const std::string& key, MPI_Comm comm) {
+FolderLock::FolderLock(const std::string& folder) {
+  const std::string path = (fs::path(folder) / kFileName).string();
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);  // no program run from here holds it
+  if (fd < 0) throw std::system_error(errno, std::generic_category(), "open " + path);
+  if (::flock(fd, LOCK_EX | LOCK_NB) == 0) {
+    fd_ = fd;
+    char host[256] = "";
+    ::gethostname(host, sizeof host - 1);
+    // Through a second descriptor: closing it keeps the lock, which belongs to fd's open file (flock, unlike
+    // fcntl locks).
+    std::ofstream(path) << "pid " << ::getpid() << " on host " << host << "\n";
+    return;
+  }
+  const int error = errno;
+  ::close(fd);
+  if (error != EWOULDBLOCK) throw std::system_error(error, std::generic_category(), "flock " + path);
+  std::ifstream written(path);
+  std::getline(written, holder_);
+}
+
+FolderLock::~FolderLock() {
+  if (fd_ >= 0) ::close(fd_);  // releases the lock
+}
+
+std::unique_ptr<FolderLock> prepareOutputFolder(const std::string& folder, const std::string& key, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
-  const std::string problem = broadcastText(rank == 0 ? makeWritable(folder) : std::string(), 0, comm);
-  if (!problem.empty())
-    throw cfd::ConfigError(key, folder + " (" + problem + ")", "a folder that can be created and written");
+  std::unique_ptr<FolderLock> lock;
+  const std::string problem = broadcastText(rank == 0 ? claimFolder(folder, key, lock) : std::string(), 0, comm);
+  if (!problem.empty()) throw cfd::ConfigError(problem);
+  return lock;
 }
 
 void clearEarlierRun(const std::string& folder, MPI_Comm comm) {

@@ -1,5 +1,5 @@
-// GasConfig: a complete gas section parses; unknown keys, wrong types and out-of-range values throw
-// ConfigError naming the key path, the value and what is allowed.
+// GasConfig: a complete gas section parses; unknown keys (with the closest allowed name), wrong types and
+// out-of-range values throw ConfigError naming the key path, the value and what is allowed.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -12,7 +12,9 @@
 #include "cfd/config_error.hpp"
 #include "cfd/gas_config.hpp"
 #include "cfd/gas_solver.hpp"
+#include "cfd/internal_error.hpp"
 #include "cfd/yaml_duplicate_keys.hpp"
+#include "cfd/yaml_section.hpp"
 
 using namespace parcelflow::cfd;
 
@@ -116,6 +118,39 @@ TEST(GasConfig, UnknownKeysAreNamed) {
               {"solver.relax"});
   expectError(errorOf(replaced("{type: wall, slip: no_slip}", "{type: wall, slipp: no_slip}")),
               {"boundaries.walls.slipp"});
+}
+
+// A misspelt key is named as the unknown key it is, with its value and the closest allowed name, also when
+// the key it stands for is required (it used to be reported as `type` missing).
+TEST(GasConfig, MisspeltKeysAreNamedWithTheClosestAllowedName) {
+  const std::string requiredType = errorOf(replaced("xmin: {type: wall}", "xmin: {typ: wall}"));
+  expectError(requiredType, {"case.yaml: unknown key boundaries.xmin.typ (value wall) is not allowed here; did you "
+                             "mean type? allowed here: type, superficial_velocity, ramp_time, "
+                             "distributor_pressure_drop, pressure, slip"});
+  EXPECT_EQ(requiredType.find("required"), std::string::npos) << requiredType;
+  expectError(errorOf(replaced("{type: wall, slip: no_slip}", "{type: wall, slpi: no_slip}")),
+              {"unknown key boundaries.walls.slpi (value no_slip)", "did you mean slip?"});
+  expectError(errorOf(replaced("  density: 1.2", "  densty: 1.2")),
+              {"unknown key gas.densty (value 1.2)", "did you mean density?", "allowed here: density, viscosity"});
+  expectError(errorOf(replaced("{cylinder: {center: [0.1, 0.1], radius: 0.04,", "{cylindre: {center: [0.1, 0.1], "
+                                                                                 "radius: 0.04,")),
+              {"unknown key geometry[1].shape.cylindre", "did you mean cylinder?", "allowed here: box, cylinder"});
+  // Every unknown key of the map at once; no guess where no allowed name is near.
+  const std::string two = errorOf(replaced("xmin: {type: wall}", "xmin: {tpye: wall, colour: red}"));
+  expectError(two, {"unknown keys boundaries.xmin.tpye (value wall; did you mean type?), boundaries.xmin.colour "
+                    "(value red) are not allowed here; allowed here: type,"});
+  EXPECT_EQ(two.find("did you mean", two.find("colour")), std::string::npos) << two;
+  // A key that belongs to another boundary type names the keys of this one.
+  expectError(errorOf(replaced("xmin: {type: wall}", "xmin: {type: wall, pressure: 0}")),
+              {"unknown key boundaries.xmin.pressure (value 0) is not allowed here; allowed here: type, slip"});
+}
+
+// Reading a value of a section whose keys were not checked first is a bug: the misspelt-key message depends on it.
+TEST(YamlSection, ReadingBeforeTheKeysAreCheckedIsAnInternalError) {
+  const YamlSection section(YAML::Load("{densty: 1.2}"), "gas");
+  EXPECT_THROW(section.number("density", 1.0, Range::any()), InternalError);
+  section.allowOnly({"densty"});
+  EXPECT_DOUBLE_EQ(section.number("densty", std::nullopt, Range::any()), 1.2);
 }
 
 TEST(GasConfig, WrongTypesAreNamed) {

@@ -59,6 +59,34 @@ TEST(CaseReader, ErrorsNameKeyValueAndAllowed) {
   expectMentions(errorOf("output: {monitor_interval: -1}\n"), {"output.monitor_interval", "-1"});
 }
 
+// A misspelt key is the unknown key it is (with its value and the closest allowed name), also when the key it
+// stands for is required.
+TEST(CaseReader, MisspeltKeysAreNamedWithTheClosestAllowedName) {
+  const auto errorOfFile = [](const std::string& yaml) {
+    try {
+      pc::readCouplingSettings(YAML::Load(yaml));
+    } catch (const parcelflow::cfd::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string requiredStep =
+      errorOfFile("liggghts: {script: bed.in}\ntime: {end: 1.0, gas_stp: 2.0e-4, dem_step: 2.0e-5}\n");
+  expectMentions(requiredStep, {"case.yaml: unknown key time.gas_stp (value 2.0e-4) is not allowed here; did you "
+                                "mean gas_step? allowed here: end, gas_step, dem_step"});
+  EXPECT_EQ(requiredStep.find("required"), std::string::npos) << requiredStep;
+  expectMentions(errorOfFile("liggghts: {scrpit: bed.in}\n"),
+                 {"unknown key liggghts.scrpit (value bed.in)", "did you mean script?"});
+  expectMentions(errorOf("coupling: {kernel: {type: gaussian, sharpnes: 2}}\n"),
+                 {"unknown key coupling.kernel.sharpnes (value 2)", "did you mean sharpness?",
+                  "allowed here: type, sharpness, radius, length_scale"});
+  expectMentions(errorOf("output: {feilds_interval: 0.1, colour: red}\n"),
+                 {"unknown keys output.feilds_interval (value 0.1; did you mean fields_interval?), output.colour "
+                  "(value red) are not allowed here"});
+  expectMentions(errorOf("monitor: {pressure_planes: [0.01]}\n"),
+                 {"unknown key monitor (value ", "did you mean monitors?"});
+}
+
 TEST(CaseReader, GasStepMustBeAWholeNumberOfDemSteps) {
   const char* yaml = R"(
 liggghts: {script: bed.in}
