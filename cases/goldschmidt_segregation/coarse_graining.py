@@ -11,6 +11,8 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
   d5mm_none    5 mm parcels for both classes (mode constant_diameter ... dp_by_type, np 37.04 and 8), parcel
                contact values (scaling none): the beads' spring and restitution with the parcels' masses
   d5mm_linear  the same parcels with the beads' contact values scaled per type pair (scaling linear)
+  d2.5mm_linear  2.5 mm parcels of both classes, the largest constant diameter with 6 parcels across the bed's
+               15 mm depth (parcel_size_report.h): the small beads np 4.63, the large beads single; scaling linear
 Every coarse bed has the fine bed's solid mass (to within a parcel), 50/50 by mass. Larger spheres fit less
 densely into the insertion region (fix insert/pack places them at random without overlap, and a 5 mm sphere
 leaves its centre 7.4 mm of the 12.4 mm wide slot), so the region is made taller until the solid volume over
@@ -23,11 +25,15 @@ steps per contact of two parcels (t_c = pi/sqrt(kn/m_eff), parcelflow's check, w
 11 gives the shipped case's step (gas step / 12). The gas step is the case's for all variants.
 
 Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start S] [--ranks N] [--jobs J]
+                          [--set KEY=VALUE ...]
                           [--mpirun CMD] [VARIANT ...]
   --case DIR   the fine bed: a folder like this one (default); e.g. a copy with another width or bead count
   --end T      coupled time of every run [s] (default 5); statistics over times in [S, T], --start S (default 1)
   --ranks N    MPI ranks per run (default 2); --jobs J runs at once (default 1: run times stay comparable)
-  --mpirun CMD the MPI launcher (default "mpirun"; "-np N" is appended)
+  --mpirun CMD the MPI launcher (default "mpirun"; "-np N" is appended; with several 1-rank --jobs use
+               "mpirun --bind-to none": Open MPI binds every 1-rank run to the same first core)
+  --set KEY=VALUE  sets a key of the case.yaml copies (dotted path, VALUE in YAML), for every variant, e.g.
+               --set coupling.kernel.boundary=reflect --set coupling.kernel.parcel_scale=2
   Each variant runs in OUTPUT_ROOT/VARIANT/ (case copy in case/, run in run/). A variant whose run finished
   with the same case settings, --end and --ranks is not run again, so the script can be called again to
   add variants or to rebuild the table. Without VARIANT names: all. The table goes to stdout and to
@@ -65,6 +71,10 @@ GRAVITY = 9.81
 COARSE_DIAMETER = 5e-3            # parcel diameter of the d5mm variants
 STEPS_PER_CONTACT = 11
 
+# Extra height of the insertion region: random placement without overlap fills it less densely with 2.5 mm
+# spheres alone than with the bead mixture (in the smoke test's third-width bed 3,830 of 3,990 fitted).
+INSERTION_ROOM = {"d2.5mm_linear": 1.15}
+
 # name: (description, parcel diameters of types 1 and 2 [m], fix parcel mode, scaling)
 VARIANTS = {
     "fine": ("one bead per parcel (the case as shipped)", BEAD_DIAMETERS, "constant_np", "none"),
@@ -74,6 +84,9 @@ VARIANTS = {
                   (COARSE_DIAMETER, COARSE_DIAMETER), "constant_diameter", "none"),
     "d5mm_linear": ("5 mm parcels of both classes, bead contact values scaled per type pair (scaling linear)",
                     (COARSE_DIAMETER, COARSE_DIAMETER), "constant_diameter", "linear"),
+    "d2.5mm_linear": ("2.5 mm parcels of both classes (the largest diameter with 6 parcels across the 15 mm "
+                      "depth): small beads 4.63 per parcel, large beads single, scaling linear",
+                      (BEAD_DIAMETERS[1], BEAD_DIAMETERS[1]), "constant_diameter", "linear"),
 }
 
 
@@ -122,7 +135,7 @@ class Plan:
             return ((width - 2 * FILL_MARGIN - 2 * radius) * (depth - 2 * FILL_MARGIN - 2 * radius),
                     FILL_BOTTOM + 2 * radius)
         (fine_area, fine_low), (area, low) = reach(max(BEAD_DIAMETERS) / 2), reach(max(self.diameters) / 2)
-        top = low + (fine_top - fine_low) * fine_area / area if area > 0 else math.inf
+        top = low + (fine_top - fine_low) * fine_area / area * INSERTION_ROOM.get(self.name, 1.0) if area > 0 else math.inf
         if top + max(self.diameters) > height:
             sys.exit(f"{self.name}: parcels of {max(self.diameters) * 1e3:g} mm need an insertion region up to "
                      f"{top:.3g} m in this bed; allowed: up to one parcel diameter below the {height:g} m box")
@@ -293,6 +306,7 @@ def main():
     p.add_argument("--ranks", type=int, default=2)
     p.add_argument("--jobs", type=int, default=1)
     p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE")
     args = p.parse_intermixed_args()
     args.case = os.path.abspath(args.case)
     args.root = os.path.abspath(args.root)
@@ -304,7 +318,17 @@ def main():
         sys.exit(f"--start {args.start} must lie in [0, --end {args.end})")
 
     def fine_config():
-        return yaml.safe_load(open(os.path.join(args.case, "case.yaml")))
+        config = yaml.safe_load(open(os.path.join(args.case, "case.yaml")))
+        for setting in args.set:
+            key, sep, value = setting.partition("=")
+            if not sep or not key:
+                sys.exit(f"--set {setting}: expected KEY=VALUE, e.g. coupling.kernel.parcel_scale=2")
+            *parents, leaf = key.split(".")
+            node = config
+            for name in parents:
+                node = node.setdefault(name, {})
+            node[leaf] = yaml.safe_load(value)
+        return config
 
     config = fine_config()
     check_script(os.path.join(args.case, config["liggghts"]["script"]))

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Short run of cases/goldschmidt_segregation/coarse_graining.py (issue 14): a third-width slice of the bed
-(0.05 m, 16 x 5 x 94 cells, 11,230 beads) fine and in the three coarse-grained variants, settled briefly and
+(0.05 m, 16 x 5 x 94 cells, 11,230 beads) fine and in the four coarse-grained variants, settled briefly and
 coupled for 0.02 s. The physics of so short a run means nothing; the test checks that the script runs every
 variant and writes the table, and that each bed is what it must be, from the parcels the runs wrote:
   fine         11,230 parcels, np 1, dp 1.5 / 2.5 mm
   np8_linear   round(11,230 / 8) parcels of 3 / 5 mm, np 8, dp 1.5 / 2.5 mm
   d5mm_*       round(fine mass / 5 mm parcel mass) parcels of 5 mm, np (5/1.5)^3 and (5/2.5)^3 = 8
+  d2.5mm_linear  round(fine mass / 2.5 mm bead mass) parcels of 2.5 mm, np (2.5/1.5)^3 and 1
 each class with one np and dp, both classes present, and the solid mass of every coarse bed equal to the fine
 bed's within the mass of one of its parcels. The temporary folder is removed at the end.
 
@@ -69,6 +70,7 @@ def check(rows):
         "np8_linear": (round(NBEADS / 8), 8.0, 8.0, 2 * SMALL, 2 * LARGE),
         "d5mm_none": (round(fine_mass / mass(COARSE)), (COARSE / SMALL) ** 3, 8.0, COARSE, COARSE),
         "d5mm_linear": (round(fine_mass / mass(COARSE)), (COARSE / SMALL) ** 3, 8.0, COARSE, COARSE),
+        "d2.5mm_linear": (round(fine_mass / mass(LARGE)), (LARGE / SMALL) ** 3, 1.0, LARGE, LARGE),
     }
     if set(rows) != set(expected):
         fail(f"table rows {sorted(rows)}, expected {sorted(expected)}")
