@@ -151,17 +151,14 @@ std::vector<InletRegionSettings> GasConfig::readInletRegions(const YamlSection& 
 }
 
 LinearSolverSettings GasConfig::readLinearSolver(const YamlSection& s, LinearSolverSettings fallback,
-                                                 bool reusable) {
+                                                 bool pressure) {
   LinearSolverSettings l = fallback;
-  if (reusable) {
-    s.allowOnly({"tolerance", "absolute_tolerance", "max_iterations", "preconditioner",
-                 "preconditioner_reuse"});
-    l.preconditionerReuse = s.integer("preconditioner_reuse", fallback.preconditionerReuse, 1, 1000);
-  } else {
-    s.allowOnly({"tolerance", "absolute_tolerance", "max_iterations", "preconditioner"});
-  }
-  l.relTolerance = s.number("tolerance", fallback.relTolerance, Range::closed(1e-16, 0.1));
-  l.absTolerance = s.number("absolute_tolerance", fallback.absTolerance, Range::nonNegative());
+  std::vector<std::string> keys{"criterion", "tolerance", "absolute_tolerance", "rel_tol", "max_iterations",
+                                "preconditioner"};
+  if (pressure) keys.insert(keys.end(), {"final_rel_tol", "preconditioner_reuse"});
+  s.allowOnly(keys);
+  if (pressure) l.preconditionerReuse = s.integer("preconditioner_reuse", fallback.preconditionerReuse, 1, 1000);
+  readStoppingCriterion(s, l, pressure);
   l.maxIterations = s.integer("max_iterations", fallback.maxIterations, 1, 100000);
   static const std::vector<std::pair<std::string, PreconditionerType>> names = {
       {"jacobi", PreconditionerType::Jacobi},
@@ -178,6 +175,29 @@ LinearSolverSettings GasConfig::readLinearSolver(const YamlSection& s, LinearSol
   for (const auto& [name, type] : names)
     if (name == p) l.preconditioner = type;
   return l;
+}
+
+void GasConfig::readStoppingCriterion(const YamlSection& s, LinearSolverSettings& l, bool pressure) {
+  const bool strict = s.word("criterion", l.criterion == StoppingCriterion::Strict ? "strict" : "normalized",
+                             {"strict", "normalized"}) == "strict";
+  const std::vector<std::string> otherKeys =
+      strict ? std::vector<std::string>{"rel_tol", "final_rel_tol"} : std::vector<std::string>{"absolute_tolerance"};
+  for (const auto& key : otherKeys)
+    if (s.has(key))
+      s.fail(key, std::string("is only allowed with criterion: ") + (strict ? "normalized" : "strict") +
+                      " (criterion is " + (strict ? "strict" : "normalized") + ")");
+  if (strict) {
+    l.criterion = StoppingCriterion::Strict;
+    l.relTolerance = s.number("tolerance", l.relTolerance, Range::closed(1e-16, 0.1));
+    l.absTolerance = s.number("absolute_tolerance", l.absTolerance, Range::nonNegative());
+    return;
+  }
+  l.criterion = StoppingCriterion::Normalized;
+  l.tolerance = s.number("tolerance", l.tolerance, Range::closed(1e-16, 0.1));
+  // Below 1: a fraction of the initial residual (1 would stop before the first iteration).
+  const Range fraction{0.0, 1.0, false, true};
+  l.relTol = s.number("rel_tol", l.relTol, fraction);
+  if (pressure) l.finalRelTol = s.number("final_rel_tol", l.finalRelTol, fraction);
 }
 
 SolverSettings GasConfig::readSolver(const YamlSection& s) {

@@ -30,10 +30,12 @@ class GasConfig {
   static std::vector<BoundarySettings> readBoundaries(const YamlSection& s);
   static std::vector<InletRegionSettings> readInletRegions(const YamlSection& top);
   static SolverSettings readSolver(const YamlSection& s);
-  // reusable: the solver keeps its preconditioner over steps (the pressure solver), so the key
-  // preconditioner_reuse is allowed.
+  // pressure: the pressure solver, which keeps its preconditioner over steps (preconditioner_reuse) and
+  // solves once per PISO corrector (final_rel_tol for the last one).
   static LinearSolverSettings readLinearSolver(const YamlSection& s, LinearSolverSettings fallback,
-                                               bool reusable);
+                                               bool pressure);
+  // criterion and the tolerance keys of a linear solver map (each allowed only with its criterion).
+  static void readStoppingCriterion(const YamlSection& s, LinearSolverSettings& l, bool pressure);
   GasSettings settings_;
 };
 

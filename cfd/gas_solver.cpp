@@ -192,7 +192,8 @@ StepReport GasSolver::advance(double dt) {
   applyInletRamps(time_ + dt);  // implicit Euler: the inlets at the new time level
   assembleMomentum(dt);
   solveMomentum();
-  for (int corr = 0; corr < settings_.solver.pisoCorrectors; ++corr) correctPressure(dt, corr == 0);
+  const int correctors = settings_.solver.pisoCorrectors;
+  for (int corr = 0; corr < correctors; ++corr) correctPressure(dt, corr == 0, corr == correctors - 1);
   finishStep(dt);
   return report_;
 }

@@ -157,7 +157,7 @@ void GasSolver::solveMomentum() {
     for (int c = 0; c < nOwned; ++c)
       rhs[c] = bU_[c][k] - alpha_[c] * m.cellVolume(c) * gradPrgh_[c][k];
     const KrylovSolver solver(*mom_, settings_.solver.momentum, diagExtra_[k]);
-    const SolveStats stats = solver.bicgstab(x, rhs);
+    const SolveStats stats = solver.bicgstab(x, rhs, stoppingRule(settings_.solver.momentum));
     report_.momentumIterations += stats.iterations;
     report_.unconvergedSolves += stats.converged ? 0 : 1;
     for (int c = 0; c < m.nLocalCells(); ++c) U_[c][k] = x[c];

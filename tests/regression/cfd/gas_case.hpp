@@ -3,10 +3,14 @@
 // global id on rank 0, and compare a run on all ranks with the same run on rank 0 alone.
 #include <mpi.h>
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "cfd/gas_solver.hpp"
@@ -121,11 +125,27 @@ inline std::vector<BoundarySettings> columnBoundaries(double u) {
           {"ymax", BoundaryType::FreeSlipWall, Vec3::Zero(), 0.0}};
 }
 
+// With PARCELFLOW_TEST_STOPPING_CRITERION=normalized (the *_normalized tests of CMakeLists.txt) the linear
+// solves stop by the normalized criterion with its default tolerances instead, so that each test's own
+// criterion shows what that criterion changes.
 inline void tightSolvers(GasSettings& s) {
   s.solver.pressure.relTolerance = 1e-14;
   s.solver.pressure.maxIterations = 5000;
   s.solver.momentum.relTolerance = 1e-14;
   s.solver.momentum.maxIterations = 5000;
+  const char* criterion = std::getenv("PARCELFLOW_TEST_STOPPING_CRITERION");
+  if (criterion && std::string(criterion) == "normalized") {
+    s.solver.pressure.criterion = s.solver.momentum.criterion = StoppingCriterion::Normalized;
+    static bool said = false;
+    if (isRoot() && !said)
+      std::cout << "[measured] linear solves stop by the normalized criterion (pressure tolerance "
+                << s.solver.pressure.tolerance << ", rel_tol " << s.solver.pressure.relTol << ", final_rel_tol "
+                << s.solver.pressure.finalRelTol << "; momentum tolerance " << s.solver.momentum.tolerance
+                << ", rel_tol " << s.solver.momentum.relTol << ")" << std::endl;
+    said = true;
+  } else if (criterion) {
+    ADD_FAILURE() << "PARCELFLOW_TEST_STOPPING_CRITERION=" << criterion << ": allowed is normalized";
+  }
 }
 
 }  // namespace parcelflow::cfd::testing

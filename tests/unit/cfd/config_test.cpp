@@ -190,6 +190,52 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
               {"max", "larger than min"});
 }
 
+// solver.pressure / solver.momentum: criterion strict (the default, |r|_2 <= tolerance |b|_2) or normalized
+// (tolerance on the normalized residual, rel_tol, final_rel_tol), each tolerance key only with its criterion.
+TEST(GasConfig, StoppingCriterionKeys) {
+  const std::string pressure = "pressure: {tolerance: 1.0e-10, max_iterations: 500, preconditioner: block_cholesky}";
+  const std::string momentum = "momentum: {tolerance: 1.0e-9}";
+  const auto settings = [&](const std::string& p, const std::string& u) {
+    return GasConfig(YAML::Load(replaced(pressure, p).replace(replaced(pressure, p).find(momentum), momentum.size(), u)))
+        .settings()
+        .solver;
+  };
+  const SolverSettings strict = settings("pressure: {criterion: strict}", "momentum: {criterion: strict}");
+  const SolverSettings defaults;
+  EXPECT_EQ(strict.pressure.criterion, StoppingCriterion::Strict);
+  EXPECT_EQ(strict.pressure.relTolerance, defaults.pressure.relTolerance);
+  EXPECT_EQ(strict.pressure.absTolerance, defaults.pressure.absTolerance);
+  EXPECT_EQ(strict.momentum.relTolerance, defaults.momentum.relTolerance);
+  const SolverSettings normalized =
+      settings("pressure: {criterion: normalized, tolerance: 1.0e-7, rel_tol: 0.01, final_rel_tol: 0.001}",
+               "momentum: {criterion: normalized}");
+  EXPECT_EQ(normalized.pressure.criterion, StoppingCriterion::Normalized);
+  EXPECT_EQ(normalized.pressure.tolerance, 1e-7);
+  EXPECT_EQ(normalized.pressure.relTol, 0.01);
+  EXPECT_EQ(normalized.pressure.finalRelTol, 0.001);
+  EXPECT_EQ(normalized.pressure.relTolerance, defaults.pressure.relTolerance);  // strict's, unchanged
+  EXPECT_EQ(normalized.momentum.criterion, StoppingCriterion::Normalized);
+  EXPECT_EQ(normalized.momentum.tolerance, defaults.momentum.tolerance);
+  EXPECT_EQ(normalized.momentum.relTol, defaults.momentum.relTol);
+
+  expectError(errorOf(replaced(pressure, "pressure: {criterion: loose}")),
+              {"solver.pressure.criterion = loose", "strict, normalized"});
+  expectError(errorOf(replaced(pressure, "pressure: {rel_tol: 0.05}")),
+              {"solver.pressure.rel_tol", "only allowed with criterion: normalized"});
+  expectError(errorOf(replaced(pressure, "pressure: {criterion: strict, final_rel_tol: 0}")),
+              {"solver.pressure.final_rel_tol", "only allowed with criterion: normalized"});
+  expectError(errorOf(replaced(pressure, "pressure: {criterion: normalized, absolute_tolerance: 1.0e-20}")),
+              {"solver.pressure.absolute_tolerance", "only allowed with criterion: strict"});
+  expectError(errorOf(replaced(pressure, "pressure: {criterion: normalized, rel_tol: 1}")),
+              {"solver.pressure.rel_tol = 1", "[0, 1)"});
+  expectError(errorOf(replaced(pressure, "pressure: {criterion: normalized, final_rel_tol: -0.1}")),
+              {"solver.pressure.final_rel_tol = -0.1", "[0, 1)"});
+  expectError(errorOf(replaced(pressure, "pressure: {criterion: normalized, tolerance: 0.5}")),
+              {"solver.pressure.tolerance = 0.5", "[1e-16, 0.1]"});
+  expectError(errorOf(replaced(momentum, "momentum: {criterion: normalized, final_rel_tol: 0}")),
+              {"unknown key solver.momentum.final_rel_tol"});
+}
+
 TEST(GasConfig, RangesTheSolverCannotHonourAreRefused) {
   expectError(errorOf(replaced("  density: 1.2", "  density: 1.0e-300")),
               {"gas.density = 1.0e-300", "[0.001, 10000]"});
