@@ -3,7 +3,7 @@
 hundred particles per run, 15 runs, under a minute). The physics of so small a silo and column means
 nothing; the test checks that
   * the driver ran every pair and wrote the table with every row: 4 coarse variants x (2 silo slots x 2
-    discharge rows + 3 column rows) = 28 rows, each measured fine quantity a number;
+    discharge rows + 2 Beverloo-fit rows + 3 column rows) = 36 rows, each measured fine quantity a number;
   * each fine run was the stock liggghts binary without any parcelflow style, each coarse run was
     `parcelflow dem` with `fix parcel` in the variant's mode (np, scaling, and for linear l = np^(1/3));
   * every coarse run holds the fine run's solid mass to within one of its parcels (equal total mass);
@@ -27,7 +27,7 @@ DRIVER = os.path.join(CASES, "coarse_graining", "dry", "validate.py")
 VARIANTS = {"np8_none": (8, "none"), "np8_linear": (8, "linear"), "np27_none": (27, "none"),
             "np27_linear": (27, "linear")}
 RUN_CASES = ("silo_narrow", "silo_wide", "column")
-ROWS_PER_VARIANT = {"silo_narrow": 2, "silo_wide": 2, "column": 3}
+ROWS_PER_VARIANT = {"silo_narrow": 2, "silo_wide": 2, "silo": 2, "column": 3}
 SPHERES_LINE = re.compile(r"^(silo|column): (\d+) spheres, ([0-9.eE+-]+) kg of solids settled", re.M)
 LARGEST_PARTICLE_MASS = 2500 * math.pi / 6 * 0.0022 ** 3  # 1.1 dp at dp = 2 mm
 
