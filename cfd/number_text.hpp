@@ -20,4 +20,11 @@ inline std::string exactNumber(double v) {
   return buf;
 }
 
+// a printf pattern of up to four numbers (%g, %.3g, ...; unused ones are 0), for messages
+inline std::string formatNumbers(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, pattern, a, b, c, d);
+  return buf;
+}
+
 }  // namespace parcelflow::cfd

@@ -4,20 +4,17 @@
 #include <cstdio>
 
 #include "broadcast_text.h"
+#include "cfd/number_text.hpp"
 
 namespace parcelflow::coupling {
 
 namespace {
 
-std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, pattern, a, b, c, d);
-  return buf;
-}
+using cfd::formatNumbers;
 
 std::string at(const cfd::Mesh& mesh, int cell) {
   const cfd::Vec3& x = mesh.cellCentre(cell);
-  return format(" at cell centre (%g, %g, %g)", x[0], x[1], x[2]);
+  return formatNumbers(" at cell centre (%g, %g, %g)", x[0], x[1], x[2]);
 }
 
 }  // namespace
@@ -32,8 +29,8 @@ std::string BlowupGuard::nonFiniteCell(const cfd::GasSolver& gas) const {
   std::string found;
   for (int c = 0; c < mesh.nOwnedCells() && found.empty(); ++c) {
     const cfd::Vec3& u = gas.velocity()[c];
-    if (!std::isfinite(gas.pressure()[c])) found = format("pressure = %g", gas.pressure()[c]) + at(mesh, c);
-    else if (!u.allFinite()) found = format("gas velocity = (%g, %g, %g)", u[0], u[1], u[2]) + at(mesh, c);
+    if (!std::isfinite(gas.pressure()[c])) found = formatNumbers("pressure = %g", gas.pressure()[c]) + at(mesh, c);
+    else if (!u.allFinite()) found = formatNumbers("gas velocity = (%g, %g, %g)", u[0], u[1], u[2]) + at(mesh, c);
   }
   struct { int has; int rank; } mine{found.empty() ? 0 : 1, rank_}, first{};
   MPI_Allreduce(&mine, &first, 1, MPI_2INT, MPI_MAXLOC, comm_);
@@ -51,7 +48,7 @@ std::string BlowupGuard::fastestCell(const cfd::GasSolver& gas) const {
     }
   MPI_Allreduce(&mine, &top, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm_);
   const std::string where = rank_ == top.rank ? at(mesh, cell) : std::string();
-  return format("largest gas speed %g m/s", top.speed) + broadcastText(where, top.rank, comm_);
+  return formatNumbers("largest gas speed %g m/s", top.speed) + broadcastText(where, top.rank, comm_);
 }
 
 void BlowupGuard::check(const cfd::GasSolver* gas, const cfd::StepReport& report, long parcels, double time,
@@ -60,19 +57,20 @@ void BlowupGuard::check(const cfd::GasSolver* gas, const cfd::StepReport& report
   if (!what.empty()) {
     what = "non-finite " + what;
   } else if (gas && !(report.cfl <= limits_.max_cfl)) {
-    what = format("gas Courant number %g above coupling.guards.max_cfl = %g; ", report.cfl, limits_.max_cfl) +
+    what = formatNumbers("gas Courant number %g above coupling.guards.max_cfl = %g; ", report.cfl, limits_.max_cfl) +
            fastestCell(*gas);
   } else if (gas && !(report.continuityError <= limits_.max_continuity_error)) {
-    what = format("continuity error %g above coupling.guards.max_continuity_error = %g", report.continuityError,
-                  limits_.max_continuity_error);
+    what = formatNumbers("continuity error %g above coupling.guards.max_continuity_error = %g",
+                         report.continuityError, limits_.max_continuity_error);
   } else if (parcels_ - parcels > limits_.max_parcel_loss * initial_parcels_) {
-    what = format("%.0f of %.0f parcels lost in one coupling step, more than coupling.guards.max_parcel_loss = %g "
-                  "of the %.0f the run started with", static_cast<double>(parcels_ - parcels),
-                  static_cast<double>(parcels_), limits_.max_parcel_loss, static_cast<double>(initial_parcels_));
+    what = formatNumbers("%.0f of %.0f parcels lost in one coupling step, more than "
+                         "coupling.guards.max_parcel_loss = %g of the %.0f the run started with",
+                         static_cast<double>(parcels_ - parcels), static_cast<double>(parcels_),
+                         limits_.max_parcel_loss, static_cast<double>(initial_parcels_));
   }
   parcels_ = parcels;
   if (what.empty()) return;
-  throw DivergedError("the run diverged at t = " + format("%g", time) + " s (gas step " + std::to_string(step) +
+  throw DivergedError("the run diverged at t = " + formatNumbers("%g", time) + " s (gas step " + std::to_string(step) +
                       "): " + what + "; " +
                       (last_checkpoint.empty()
                            ? std::string("no checkpoint was written before (output.checkpoint_interval)")

@@ -26,6 +26,7 @@
 #include "progress_line.h"
 #include "run_counters.h"
 #include "run_warnings.h"
+#include "cfd/number_text.hpp"
 #include "stop_signal.h"
 #include "time_averages.h"
 
@@ -179,8 +180,15 @@ void CoupledRun::initialize() {
   kernel_reach.parcel_scale = cs.coupling.kernel.parcel_scale;
   kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
                                             grid.spacing[2] * grid.cells[2]});
+  const cfd::LinearSolverSettings& pressure = s.case_def.gas.solver.pressure;
+  const std::string pressure_stop_rule =
+      pressure.criterion == cfd::StoppingCriterion::Strict
+          ? "max(tolerance |b|, solver.pressure.absolute_tolerance = " + cfd::shortNumber(pressure.absTolerance) +
+                "); a loose absolute_tolerance leaves the pressure unsolved"
+          : "solver.pressure.tolerance = " + cfd::shortNumber(pressure.tolerance) +
+                " of the through-flow (criterion normalized): the step's continuity error was that small already";
   s.warnings = std::make_unique<RunWarnings>(MPI_COMM_WORLD, mesh, *s.owners, s.loop.initial_parcels,
-                                             s.case_def.gas.solver.pressure.absTolerance, kernel_reach);
+                                             pressure_stop_rule, kernel_reach);
   s.guard = std::make_unique<BlowupGuard>(MPI_COMM_WORLD, cs.coupling.guards, s.loop.initial_parcels);
   s.loop.next_checkpoint = cs.output.checkpoint_interval;  // the other output times start at 0
   if (!checkpoint) clearEarlierRun(s.output.string(), MPI_COMM_WORLD);

@@ -1,18 +1,10 @@
 #include "parcel_size_report.h"
 
-#include <cstdio>
+#include "cfd/number_text.hpp"
 
 namespace parcelflow::coupling {
 
-namespace {
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-  char text[512];
-  std::snprintf(text, sizeof text, pattern, a, b, c, d);
-  return text;
-}
-
-}  // namespace
+using cfd::formatNumbers;
 
 std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const KernelReach& reach) {
   std::vector<std::string> lines;
@@ -20,23 +12,23 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
   if (sizes.largest_np <= 1.0 + 1e-9) return lines;
   const double D = sizes.largest_diameter;
   const double across = reach.narrowest_extent / D;
-  lines.push_back(format("parcelflow: coarse graining: largest parcel D = %.4g mm (up to %.4g particles), "
+  lines.push_back(formatNumbers("parcelflow: coarse graining: largest parcel D = %.4g mm (up to %.4g particles), "
                          "%.3g parcels across the narrowest extent of the gas box (%.4g mm)",
                          1e3 * D, sizes.largest_np, across, 1e3 * reach.narrowest_extent));
   if (reach.length > 0.0) {
     const double ratio = D / reach.length;
     const bool widened = reach.parcel_scale * D > reach.length;
-    lines.back() += format("; D / kernel length h (%.4g mm) = %.3g", 1e3 * reach.length, ratio);
-    if (widened) lines.back() += format(", spread over parcel_scale D = %.4g mm", 1e3 * reach.parcel_scale * D);
+    lines.back() += formatNumbers("; D / kernel length h (%.4g mm) = %.3g", 1e3 * reach.length, ratio);
+    if (widened) lines.back() += formatNumbers(", spread over parcel_scale D = %.4g mm", 1e3 * reach.parcel_scale * D);
     if (ratio > kLargestDiameterOverKernelLength && !widened)
-      lines.push_back(format("parcelflow: warning: parcels of D = %.4g mm are %.3g times the kernel length h = "
+      lines.push_back(formatNumbers("parcelflow: warning: parcels of D = %.4g mm are %.3g times the kernel length h = "
                              "%.4g mm (limit %.3g): each lands in one or two cells and the gas-fraction floor is "
                              "hit often; coupling.kernel.parcel_scale (e.g. 2) spreads a parcel over its own "
                              "size (coupling/README.md)",
                              1e3 * D, ratio, 1e3 * reach.length, kLargestDiameterOverKernelLength));
   }
   if (across < kParcelsAcrossTheNarrowestExtent)
-    lines.push_back(format("parcelflow: warning: %.3g parcels of D = %.4g mm across the narrowest extent of the "
+    lines.push_back(formatNumbers("parcelflow: warning: %.3g parcels of D = %.4g mm across the narrowest extent of the "
                            "bed (%.4g mm; limit %.3g): the parcels pack looser at the walls than the particles "
                            "they stand for, and such a bed fluidized later than its particles (the Goldschmidt "
                            "bed's 5 mm parcels, 3 across); use smaller parcels",

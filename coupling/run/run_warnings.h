@@ -2,12 +2,14 @@
 // coarse-grained parcels against the mesh and the bed (parcel_size_report.h) and parcels whose centre is in
 // no fluid cell (at the first coupling step), parcels lost (at the first step
 // after the DEM advance that lost them), pressure or momentum solves stopped at max_iterations (the first,
-// then every kUnconvergedEvery-th such step) and a pressure solve that did no iteration (its absolute
-// tolerance is above the residual). The coupled loop calls afterGasStep() once per step, on all ranks,
+// then every kUnconvergedEvery-th such step) and a pressure solve that did no iteration (its stopping rule was
+// met by the starting residual). The coupled loop calls afterGasStep() once per step, on all ranks,
 // before the blow-up guard, so that a warning about the cause comes before the guard's stop.
 #pragma once
 
 #include <mpi.h>
+
+#include <string>
 
 #include "cfd/gas_solver.hpp"
 #include "cell_owner_map.h"
@@ -22,7 +24,7 @@ class RunWarnings {
   static constexpr long kUnconvergedEvery = 100;
 
   RunWarnings(MPI_Comm comm, const cfd::Mesh& mesh, const CellOwnerMap& owners, long parcels,
-              double absolute_tolerance, KernelReach kernel_reach);
+              std::string pressure_stop_rule, KernelReach kernel_reach);
 
   // `batch`: the parcels at the start of the step (their ids in `ids`); time and step at its end. Collective.
   void afterGasStep(const ParcelBatch& batch, const std::vector<long>& ids, const cfd::StepReport& report,
@@ -37,7 +39,7 @@ class RunWarnings {
   const cfd::Mesh& mesh_;
   const CellOwnerMap& owners_;
   long parcels_;
-  double absolute_tolerance_;
+  std::string pressure_stop_rule_;  // what "converged" meant, for the warning of a solve without iterations
   KernelReach kernel_reach_;
   bool first_ = true, warned_no_iterations_ = false;
   long unconverged_steps_ = 0;

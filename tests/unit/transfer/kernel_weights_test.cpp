@@ -55,6 +55,12 @@ std::vector<double> testPositions(const MaskedGrid& g) {
 const int kOffCentreCell[3] = {3, 4, 4};
 const double kOffCentreShift[3] = {0.3, -0.45, 0.1};
 
+double weightSum(const Stencil& s) {
+  double sum = 0.0;
+  for (int e = 0; e < s.size; ++e) sum += s.weight[e];
+  return sum;
+}
+
 void offCentreParcel(const MaskedGrid& g, double (&x)[3]) {
   for (int d = 0; d < 3; ++d)
     x[d] = g.grid.cellCentre(d, kOffCentreCell[d]) + kOffCentreShift[d] * g.grid.spacing[d];
@@ -257,9 +263,7 @@ TEST(KernelWeights, ParcelWindowIsCappedAtTheLargestRadius) {
   Stencil s;
   ASSERT_EQ(stencilOf(GaussianKernel(1.0, 2, kTestSpacing, true, 1.0), g.grid, x, g, s, 4.0 * h), StencilResult::ok);
   EXPECT_EQ(s.size, 9 * 9 * 9);
-  double sum = 0.0;
-  for (int e = 0; e < s.size; ++e) sum += s.weight[e];
-  EXPECT_NEAR(sum, 1.0, 1e-14);
+  EXPECT_NEAR(weightSum(s), 1.0, 1e-14);
 }
 
 TEST(KernelWeights, ReflectingFacesAddTheMirrorImagesWeights) {
@@ -307,9 +311,7 @@ TEST(KernelWeights, ReflectingFacesFoldAWindowWiderThanTheBox) {
   Stencil s;
   ASSERT_EQ(stencilOf(kernel, g.grid, x, g, s), StencilResult::ok);
   EXPECT_EQ(s.size, 9 * 2 * 9);
-  double sum = 0.0;
-  for (int e = 0; e < s.size; ++e) sum += s.weight[e];
-  EXPECT_NEAR(sum, 1.0, 1e-14);
+  EXPECT_NEAR(weightSum(s), 1.0, 1e-14);
 }
 
 TEST(KernelWeights, GatherOfLinearFieldInTheInterior) {
