@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <variant>
 
 #include "cfd/internal_error.hpp"
 
@@ -25,6 +26,7 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
       gas_(gas),
       cell_volume_(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]),
       uses_mean_diameter_(usesMeanDiameter(drag_)),
+      kernel_reads_diameters_(std::visit([](const auto& k) { return k.readsDiameter(); }, kernel_)),
       fluid_(grid, [&](int i, int j, int k) { return owners.ownerRank(backgroundCell(i, j, k)) >= 0; }) {
   grid_.validate();
   int rank = 0;
@@ -36,11 +38,13 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
 
 TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   parcels_ = parcels;
-  // collision diameter D = dp np^(1/3) in both parcel modes (constant np, and constant D with np = (D/dp)^3)
-  diameters_.resize(parcels.size);
-  for (std::size_t p = 0; p < parcels.size; ++p) diameters_[p] = parcels.dp[p] * std::cbrt(parcels.np[p]);
-  const TransferStats stats =
-      buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_, diameters_.data());
+  if (kernel_reads_diameters_) {
+    // collision diameter D = dp np^(1/3) in both parcel modes (constant np, and constant D with np = (D/dp)^3)
+    diameters_.resize(parcels.size);
+    for (std::size_t p = 0; p < parcels.size; ++p) diameters_[p] = parcels.dp[p] * std::cbrt(parcels.np[p]);
+  }
+  const TransferStats stats = buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_,
+                                               kernel_reads_diameters_ ? diameters_.data() : nullptr);
   // Every fluid cell of the box is exchanged (cells no window reaches carry zeros): the box is this
   // rank's parcels' neighbourhood, so it is about the cells the stencils touch.
   touched_.clear();

@@ -95,12 +95,13 @@ class ParcelMeshCoupler {
   double cell_volume_;
   int n_owned_;
   bool uses_mean_diameter_;           // the drag law reads the local Sauter mean
+  bool kernel_reads_diameters_;       // the kernel widens for large parcels (coupling.kernel.parcel_scale)
   std::vector<double> owned_moments_;  // per owned cell: sum w np V_p, sum w np dp^2 (if used)
 
   FluidCells fluid_;  // background cells some rank owns
 
   ParcelBatch parcels_;
-  std::vector<double> diameters_;       // this step's collision diameters, for a kernel that widens for them
+  std::vector<double> diameters_;       // this step's collision diameters, if the kernel reads them
   BoxStencils stencils_;                // this step's stencils
   std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
   std::vector<long> box_of_touched_;    // their box index

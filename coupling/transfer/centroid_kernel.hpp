@@ -20,6 +20,7 @@ class CentroidKernel {
   explicit CentroidKernel(int searchRadius = 1);
 
   int searchRadius() const { return r_; }
+  bool readsDiameter() const { return false; }
 
   // One cell with factor 1: the containing one if it is fluid (isFluid(i, j, k)), else the nearest
   // fluid cell within +-searchRadius (fallback), else none (orphan). The parcel's diameter is not read.

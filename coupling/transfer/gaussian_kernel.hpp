@@ -52,6 +52,8 @@ class GaussianKernel {
   double axisSharpness(int d) const { return axisA_[d]; }
   int radius() const { return r_; }
   double parcelFactor() const { return parcelFactor_; }
+  // whether window() reads the parcel's diameter (only to widen the kernel for large parcels)
+  bool readsDiameter() const { return parcelFactor_ > 0.0; }
   bool reflectsAtFaces() const { return reflect_; }
 
   // Mass fraction of the untruncated 1-D lattice kernel (all cells of an infinite row) that lies in

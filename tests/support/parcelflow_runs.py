@@ -69,3 +69,13 @@ def run_case(parcelflow, launcher, source, edit, prepare=lambda case: None):
     summary = [l for l in stdout.splitlines() if l.startswith("parcelflow: done")]
     print(summary[-1] if summary else "(no summary line)")
     return out
+
+
+def expect_nothing_left(work, here_before):
+    """Fails if the temporary folder `work` still exists or the working folder holds entries that were not in
+    `here_before` (its listing before the runs)."""
+    if os.path.exists(work):
+        fail(f"the temporary folder {work} is still there")
+    left = set(os.listdir(".")) - here_before
+    if left:
+        fail(f"the runs left {sorted(left)} in the working folder {os.getcwd()}")

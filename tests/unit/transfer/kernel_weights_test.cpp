@@ -61,6 +61,24 @@ double weightSum(const Stencil& s) {
   return sum;
 }
 
+// The stencil's weights against exp(-sum_d (dx_d / length_d)^2), computed from the distances between the cell
+// centres and the parcel at x and renormalised over the stencil's cells.
+void expectGaussianOfDistances(const MaskedGrid& g, const Stencil& s, const double (&x)[3],
+                               const double (&length)[3]) {
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double exponent = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      const double t = (g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d]) / length[d];
+      exponent += t * t;
+    }
+    expected[e] = std::exp(-exponent);
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+}
+
 void offCentreParcel(const MaskedGrid& g, double (&x)[3]) {
   for (int d = 0; d < 3; ++d)
     x[d] = g.grid.cellCentre(d, kOffCentreCell[d]) + kOffCentreShift[d] * g.grid.spacing[d];
@@ -171,18 +189,8 @@ TEST(KernelWeights, GaussianWithTheCellVolumeLengthIsIsotropicInSpace) {
   const GaussianKernel kernel(a, 2, spacing);
   ASSERT_EQ(stencilOf(kernel, g.grid, x, g, s), StencilResult::ok);
   ASSERT_EQ(s.size, 125);
-  std::vector<double> expected(s.size);
-  double total = 0.0;
-  for (int e = 0; e < s.size; ++e) {
-    double r2 = 0.0;
-    for (int d = 0; d < 3; ++d) {
-      const double dx = g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d];
-      r2 += dx * dx;
-    }
-    expected[e] = std::exp(-a * r2 / (h * h));
-    total += expected[e];
-  }
-  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+  const double length = h / std::sqrt(a);  // exp(-a r^2 / h^2)
+  expectGaussianOfDistances(g, s, x, {length, length, length});
   // per axis in that axis' cell lengths: a (h_d / h)^2, narrower along the longest axis
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(kernel.axisSharpness(d), a * spacing[d] * spacing[d] / (h * h), 1e-14);
   // on cubic cells it is the per-axis kernel exactly
@@ -203,18 +211,8 @@ TEST(KernelWeights, GaussianOfAParcelWiderThanTheCellFollowsTheParcel) {
   Stencil s;
   ASSERT_EQ(stencilOf(kernel, g.grid, x, g, s, D), StencilResult::ok);
   ASSERT_EQ(s.size, 7 * 7 * 7);
-  std::vector<double> expected(s.size);
-  double total = 0.0;
-  for (int e = 0; e < s.size; ++e) {
-    double r2 = 0.0;
-    for (int d = 0; d < 3; ++d) {
-      const double dx = g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d];
-      r2 += dx * dx;
-    }
-    expected[e] = std::exp(-a * r2 / (lambda * lambda * D * D));
-    total += expected[e];
-  }
-  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+  const double length = lambda * D / std::sqrt(a);  // exp(-a r^2 / (lambda D)^2)
+  expectGaussianOfDistances(g, s, x, {length, length, length});
 
   // a parcel with lambda D <= h, and any parcel with lambda = 0, gets the cell's kernel exactly
   Stencil cell, small, off;
@@ -239,19 +237,7 @@ TEST(KernelWeights, CellAxesKernelWidensOnlyTheAxesNarrowerThanTheParcel) {
   Stencil s;
   ASSERT_EQ(stencilOf(GaussianKernel(1.0, 2, kTestSpacing, false, 1.0), g.grid, x, g, s, D), StencilResult::ok);
   ASSERT_EQ(s.size, 7 * 5 * 5);
-  const double length[3] = {D, kTestSpacing[1], kTestSpacing[2]};
-  std::vector<double> expected(s.size);
-  double total = 0.0;
-  for (int e = 0; e < s.size; ++e) {
-    double exponent = 0.0;
-    for (int d = 0; d < 3; ++d) {
-      const double t = (g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d]) / length[d];
-      exponent += t * t;
-    }
-    expected[e] = std::exp(-exponent);
-    total += expected[e];
-  }
-  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+  expectGaussianOfDistances(g, s, x, {D, kTestSpacing[1], kTestSpacing[2]});
 }
 
 TEST(KernelWeights, ParcelWindowIsCappedAtTheLargestRadius) {

@@ -21,7 +21,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, fail, run  # noqa: E402
+from parcelflow_runs import CASES, expect_nothing_left, fail, run  # noqa: E402
 
 DRIVER = os.path.join(CASES, "coarse_graining", "dry", "validate.py")
 VARIANTS = {"np8_none": (8, "none"), "np8_linear": (8, "linear"), "np27_none": (27, "none"),
@@ -44,11 +44,7 @@ def main():
         check_table(os.path.join(work, "coarse_graining_dry.csv"))
         for case in RUN_CASES:
             check_runs(work, case, parcelflow, liggghts)
-    if os.path.exists(work):
-        fail(f"the temporary folder {work} is still there")
-    left = set(os.listdir(".")) - here_before
-    if left:
-        fail(f"the runs left {sorted(left)} in the working folder {os.getcwd()}")
+    expect_nothing_left(work, here_before)
     print("PASS")
 
 

@@ -20,7 +20,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, copy_case, fail, run  # noqa: E402
+from parcelflow_runs import CASES, copy_case, expect_nothing_left, fail, run  # noqa: E402
 
 SCRIPT = os.path.join(CASES, "goldschmidt_segregation", "coarse_graining.py")
 NBEADS, WIDTH, DENSITY = 11230, 0.05, 2526.0
@@ -56,11 +56,7 @@ def main():
         rows = {r["variant"]: r for r in csv.DictReader(open(os.path.join(root, "coarse_graining.csv")))}
         check(rows)
         check_parcel_reports(root)
-    if os.path.exists(work):
-        fail(f"the temporary folder {work} is still there")
-    left = set(os.listdir(".")) - here_before
-    if left:
-        fail(f"the runs left {sorted(left)} in the working folder {os.getcwd()}")
+    expect_nothing_left(work, here_before)
     print("PASS")
 
 
