@@ -30,9 +30,15 @@ class CellExchange {
     std::vector<int> send_counts, send_offsets, recv_counts, recv_offsets;
     std::vector<int> order;           // cell positions sorted by destination rank
     std::vector<int> remote_index;    // owner-local indices of the cells this rank receives
+    std::vector<int> send_index;      // setCells' owner-local indices in send order
   };
+  // The counts and offsets of one transfer of `width` values per cell, in the scratch below.
+  void scaleCounts(int width) const;
   const CellOwnerMap& owners_;
   Routing route_;
+  // Reused by every transfer (each coupling step runs several): no allocation once they have grown.
+  mutable std::vector<double> send_, recv_;
+  mutable std::vector<int> counts_[4];  // send counts, send offsets, recv counts, recv offsets x width
 };
 
 }  // namespace parcelflow::coupling

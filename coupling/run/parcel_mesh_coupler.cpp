@@ -61,38 +61,36 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   return stats;
 }
 
-std::vector<double> ParcelMeshCoupler::fetchTouched(const std::vector<double>& owned, int width) const {
-  std::vector<double> values;
-  exchange_.fetchFromOwners(owned, width, values);
-  return values;
-}
-
 void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, int width,
-                                        std::vector<double>& owned) const {
-  std::vector<double> on_box(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
+                                        std::vector<double>& owned) {
+  std::vector<double>& on_box = scratch_.on_box;
+  on_box.assign(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
   deposit(stencils_, width, per_parcel.data(), on_box.data());
-  std::vector<double> on_touched(touched_.size() * width);
+  std::vector<double>& on_touched = scratch_.on_touched;
+  on_touched.resize(touched_.size() * width);
   for (std::size_t t = 0; t < touched_.size(); ++t)
     for (int m = 0; m < width; ++m) on_touched[width * t + m] = on_box[width * box_of_touched_[t] + m];
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
   exchange_.sumToOwners(on_touched, width, owned);
 }
 
-std::vector<double> ParcelMeshCoupler::gatherFromOwned(const std::vector<double>& owned, int width,
-                                                       double orphan_value) const {
-  const std::vector<double> on_touched = fetchTouched(owned, width);
+void ParcelMeshCoupler::gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value,
+                                        std::vector<double>& at_parcels) {
+  std::vector<double>& on_touched = scratch_.on_touched;
+  exchange_.fetchFromOwners(owned, width, on_touched);
   // Non-fluid box cells stay 0: windows reach them with weights that must contribute nothing.
-  std::vector<double> on_box(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
+  std::vector<double>& on_box = scratch_.on_box;
+  on_box.assign(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
   for (std::size_t t = 0; t < touched_.size(); ++t)
     for (int m = 0; m < width; ++m) on_box[width * box_of_touched_[t] + m] = on_touched[width * t + m];
-  std::vector<double> at_parcels(parcels_.size * width);
+  at_parcels.resize(parcels_.size * width);
   gather(stencils_, width, on_box.data(), at_parcels.data(), orphan_value);
-  return at_parcels;
 }
 
 void ParcelMeshCoupler::depositSolids(std::vector<double>& owned_solid_fraction) {
   const int width = uses_mean_diameter_ ? 2 : 1;
-  std::vector<double> moments(parcels_.size * width);
+  std::vector<double>& moments = scratch_.per_parcel;
+  moments.resize(parcels_.size * width);
   for (std::size_t p = 0; p < parcels_.size; ++p) {
     const double d = parcels_.dp[p];
     moments[width * p] = parcels_.np[p] * kPi / 6.0 * d * d * d;
@@ -111,7 +109,8 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
   const int width = uses_mean_diameter_ ? 6 : 4;
   PARCELFLOW_ASSERT(!uses_mean_diameter_ || owned_moments_.size() == 2 * static_cast<std::size_t>(n_owned_),
                         "computeDrag needs this step's depositSolids for the Sauter mean");
-  std::vector<double> owned(static_cast<std::size_t>(n_owned_) * width);
+  std::vector<double>& owned = scratch_.owned;
+  owned.resize(static_cast<std::size_t>(n_owned_) * width);
   for (int c = 0; c < n_owned_; ++c) {
     owned[width * c] = owned_gas_fraction[c];
     for (int d = 0; d < 3; ++d) owned[width * c + 1 + d] = owned_velocity[3 * c + d];
@@ -119,10 +118,12 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
       for (int m = 0; m < 2; ++m) owned[width * c + 4 + m] = owned_moments_[2 * c + m];
   }
   // Orphans get NaN: the drag law counts them as invalid input and gives them kappa = 0.
-  const std::vector<double> gas = gatherFromOwned(owned, width, std::numeric_limits<double>::quiet_NaN());
+  std::vector<double>& gas = scratch_.gathered;
+  gatherFromOwned(owned, width, std::numeric_limits<double>::quiet_NaN(), gas);
   at_parcels.gas_fraction.resize(n);
   at_parcels.mean_diameter.resize(uses_mean_diameter_ ? n : 0);
-  std::vector<double> slip(n);
+  std::vector<double>& slip = scratch_.slip;
+  slip.resize(n);
   for (std::size_t p = 0; p < n; ++p) {
     const double* g = gas.data() + width * p;
     at_parcels.gas_fraction[p] = g[0];
@@ -142,13 +143,14 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
   batch.rhoG = gas_.density;
   batch.muG = gas_.viscosity;
   at_parcels.kappa.assign(n, 0.0);
-  std::vector<double> momentum(4 * n);
+  std::vector<double>& momentum = scratch_.per_parcel;
+  momentum.resize(4 * n);
   const DragStats stats = forEachParcel(drag_, batch, limits_, [&](std::size_t p, double, double kappa) {
     at_parcels.kappa[p] = kappa;
     momentum[4 * p] = kappa;
     for (int d = 0; d < 3; ++d) momentum[4 * p + 1 + d] = kappa * parcels_.v[3 * p + d];
   });
-  std::vector<double> deposited;
+  std::vector<double>& deposited = scratch_.deposited;
   depositToOwners(momentum, 4, deposited);
   solids.beta.resize(n_owned_);
   solids.beta_us.resize(3 * static_cast<std::size_t>(n_owned_));
@@ -161,14 +163,16 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
 
 void ParcelMeshCoupler::gatherGas(const std::vector<double>& owned_velocity, const std::vector<double>& owned_grad_p,
                                   GasAtParcels& at_parcels) {
-  std::vector<double> owned(static_cast<std::size_t>(n_owned_) * 6);
+  std::vector<double>& owned = scratch_.owned;
+  owned.resize(static_cast<std::size_t>(n_owned_) * 6);
   for (int c = 0; c < n_owned_; ++c)
     for (int d = 0; d < 3; ++d) {
       owned[6 * c + d] = owned_velocity[3 * c + d];
       owned[6 * c + 3 + d] = owned_grad_p[3 * c + d];
     }
   // Orphans (counted in beginStep) feel no gas: zero velocity and pressure gradient, kappa 0.
-  const std::vector<double> gas = gatherFromOwned(owned, 6, 0.0);
+  std::vector<double>& gas = scratch_.gathered;
+  gatherFromOwned(owned, 6, 0.0, gas);
   at_parcels.gas_velocity.resize(3 * parcels_.size);
   at_parcels.grad_p.resize(3 * parcels_.size);
   for (std::size_t p = 0; p < parcels_.size; ++p)

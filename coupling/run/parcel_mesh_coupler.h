@@ -78,10 +78,11 @@ class ParcelMeshCoupler {
   double cellVolume() const { return cell_volume_; }
 
  private:
-  // Values of `width` components per owned cell -> the same values on this rank's touched cells.
-  std::vector<double> fetchTouched(const std::vector<double>& owned, int width) const;
-  void depositToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned) const;
-  std::vector<double> gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value) const;
+  // `width` values per parcel -> their kernel-weighted sums on the owned cells.
+  void depositToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned);
+  // `width` values per owned cell -> kernel-weighted means at the parcels (orphans get orphan_value).
+  void gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value,
+                       std::vector<double>& at_parcels);
   long backgroundCell(int i, int j, int k) const {
     return i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k);
   }
@@ -105,6 +106,13 @@ class ParcelMeshCoupler {
   BoxStencils stencils_;                // this step's stencils
   std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
   std::vector<long> box_of_touched_;    // their box index
+
+  // Work arrays of the transfers, kept from step to step so that a coupling step allocates nothing once
+  // they have grown to the largest batch and box.
+  struct Scratch {
+    std::vector<double> on_box, on_touched, owned;               // cell values: box, touched, owned rows
+    std::vector<double> per_parcel, gathered, slip, deposited;  // parcel values; drag sums on owned cells
+  } scratch_;
 };
 
 }  // namespace parcelflow::coupling
