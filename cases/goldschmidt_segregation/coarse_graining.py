@@ -8,11 +8,17 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
   fine         one bead per parcel: the case as shipped
   np8_linear   8 beads per parcel (fix parcel mode constant_np np 8 scaling linear): parcels of 3 and 5 mm,
                1/8 of the parcels; the beads' contact values scaled by l = 2
+  np27_linear  27 beads per parcel: parcels of 4.5 and 7.5 mm, l = 3 (for wider beds: cases/coarse_graining/
+               fluidized; the 15 mm deep bed holds two 7.5 mm parcels across)
   d5mm_none    5 mm parcels for both classes (mode constant_diameter ... dp_by_type, np 37.04 and 8), parcel
                contact values (scaling none): the beads' spring and restitution with the parcels' masses
   d5mm_linear  the same parcels with the beads' contact values scaled per type pair (scaling linear)
   d2.5mm_linear  2.5 mm parcels of both classes, the largest constant diameter with 6 parcels across the bed's
                15 mm depth (parcel_size_report.h): the small beads np 4.63, the large beads single; scaling linear
+  np8_linear_dissipation  np8_linear with the parcel-parcel restitution lowered to e' = sqrt(1 - l (1 - e^2))
+               (0.97 -> 0.939 at l = 2): parcels collide 1/l as often per unit mass, so this keeps the
+               collisional dissipation per unit mass (kinetic theory; coarse-graining.md); parcel-wall
+               contacts keep e (their dissipation per wall area does not depend on the parcel size)
 Every coarse bed has the fine bed's solid mass (to within a parcel), 50/50 by mass. Larger spheres fit less
 densely into the insertion region (fix insert/pack places them at random without overlap, and a 5 mm sphere
 leaves its centre 7.4 mm of the 12.4 mm wide slot), so the region is made taller until the solid volume over
@@ -36,7 +42,8 @@ Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start
                --set coupling.kernel.boundary=reflect --set coupling.kernel.parcel_scale=2
   Each variant runs in OUTPUT_ROOT/VARIANT/ (case copy in case/, run in run/). A variant whose run finished
   with the same case settings, --end and --ranks is not run again, so the script can be called again to
-  add variants or to rebuild the table. Without VARIANT names: all. The table goes to stdout and to
+  add variants or to rebuild the table. Without VARIANT names: the Goldschmidt comparison, DEFAULT_VARIANTS
+  (np27_linear and np8_linear_dissipation by name only). The table goes to stdout and to
   OUTPUT_ROOT/coarse_graining.csv.
 """
 import argparse
@@ -75,11 +82,16 @@ STEPS_PER_CONTACT = 11
 # spheres alone than with the bead mixture (in the smoke test's third-width bed 3,830 of 3,990 fitted).
 INSERTION_ROOM = {"d2.5mm_linear": 1.15}
 
+# Variants whose parcel-parcel restitution keeps the fine bed's collisional dissipation per unit mass.
+KEEP_DISSIPATION = {"np8_linear_dissipation"}
+
 # name: (description, parcel diameters of types 1 and 2 [m], fix parcel mode, scaling)
 VARIANTS = {
     "fine": ("one bead per parcel (the case as shipped)", BEAD_DIAMETERS, "constant_np", "none"),
     "np8_linear": ("8 beads per parcel: 3 and 5 mm parcels, scaling linear",
                    tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "np27_linear": ("27 beads per parcel: 4.5 and 7.5 mm parcels, scaling linear",
+                    tuple(3 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "d5mm_none": ("5 mm parcels of both classes, parcel contact values (scaling none)",
                   (COARSE_DIAMETER, COARSE_DIAMETER), "constant_diameter", "none"),
     "d5mm_linear": ("5 mm parcels of both classes, bead contact values scaled per type pair (scaling linear)",
@@ -87,24 +99,30 @@ VARIANTS = {
     "d2.5mm_linear": ("2.5 mm parcels of both classes (the largest diameter with 6 parcels across the 15 mm "
                       "depth): small beads 4.63 per parcel, large beads single, scaling linear",
                       (BEAD_DIAMETERS[1], BEAD_DIAMETERS[1]), "constant_diameter", "linear"),
+    "np8_linear_dissipation": ("np8_linear with parcel-parcel restitution 1 - e'^2 = l (1 - e^2)",
+                               tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
 }
+
+
+# What runs without variant names: the fine bed and the coarse beds compared with it in the README.
+DEFAULT_VARIANTS = ("fine", "np8_linear", "d5mm_none", "d5mm_linear", "d2.5mm_linear")
 
 
 def sphere_mass(d):
     return DENSITY * math.pi / 6 * d ** 3
 
 
-def damping_matrix(masses):
-    """gamman = gammat (mass-specific) of types 1-3 for RESTITUTION: 2 w0 (-ln e)/sqrt(pi^2 + ln^2 e),
-    w0 = sqrt(k/m_eff); type 3 is the wall (m_eff = the parcel's mass; 3-3 as 2-3, not used)."""
-    ln = math.log(RESTITUTION)
-
-    def gamma(m_eff):
+def damping_matrix(masses, parcel_restitution=RESTITUTION):
+    """gamman = gammat (mass-specific) of types 1-3: 2 w0 (-ln e)/sqrt(pi^2 + ln^2 e), w0 = sqrt(k/m_eff);
+    e = parcel_restitution between parcels, RESTITUTION at the wall (type 3: m_eff = the parcel's mass; 3-3
+    as 2-3, not used)."""
+    def gamma(m_eff, e):
+        ln = math.log(e)
         return 2 * math.sqrt(SPRING / m_eff) * -ln / math.sqrt(math.pi ** 2 + ln ** 2)
 
-    m1, m2 = masses
-    pair = gamma(m1 * m2 / (m1 + m2))
-    rows = [[gamma(m1 / 2), pair, gamma(m1)], [pair, gamma(m2 / 2), gamma(m2)], [gamma(m1), gamma(m2), gamma(m2)]]
+    m1, m2, e = *masses, parcel_restitution
+    pair, wall = gamma(m1 * m2 / (m1 + m2), e), (gamma(m1, RESTITUTION), gamma(m2, RESTITUTION))
+    rows = [[gamma(m1 / 2, e), pair, wall[0]], [pair, gamma(m2 / 2, e), wall[1]], [wall[0], wall[1], wall[1]]]
     return "  ".join(" ".join(f"{g:.6g}" for g in row) for row in rows)
 
 
@@ -158,6 +176,10 @@ class Plan:
                      "free_steps": str(round(FREE_STEPS * stretch))}
         if self.scaling == "none":  # parcel values: the beads' spring and restitution with the parcels' masses
             variables["damping"] = damping_matrix(self.masses)
+        if self.name in KEEP_DISSIPATION:  # the beads' values for e'; scaling linear keeps e' for the parcels
+            l = self.diameters[0] / BEAD_DIAMETERS[0]
+            restitution = math.sqrt(1 - l * (1 - RESTITUTION ** 2))
+            variables["damping"] = damping_matrix([sphere_mass(d) for d in BEAD_DIAMETERS], restitution)
         return variables
 
 
@@ -310,7 +332,7 @@ def main():
     args = p.parse_intermixed_args()
     args.case = os.path.abspath(args.case)
     args.root = os.path.abspath(args.root)
-    names = args.variants or list(VARIANTS)
+    names = args.variants or list(DEFAULT_VARIANTS)
     unknown = [n for n in names if n not in VARIANTS]
     if unknown:
         sys.exit(f"unknown variant(s) {unknown}; known: {', '.join(VARIANTS)}")
