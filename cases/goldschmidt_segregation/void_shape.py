@@ -44,6 +44,29 @@ def depth_averaged(gas_fraction, centres):
     return total / count, spacing[0]
 
 
+def depth_slices(gas_fraction, centres, fractions):
+    """The field on the rows of cells nearest to each of the depths y = fraction x (bed depth) of a 3D bed,
+    as [(a[z, x], dx), ...] (void_shape measures a quasi-2D bed's depth average; a bed as deep as it is wide
+    is measured on slices instead)."""
+    index, values = [], []
+    for d in range(3):
+        values.append(np.unique(np.round(centres[:, d], 9)))
+        step = np.diff(values[d])[0] if len(values[d]) > 1 else 1.0
+        index.append(np.rint((centres[:, d] - values[d][0]) / step).astype(int))
+    nx, ny, nz = (i.max() + 1 for i in index)
+    dx = np.diff(values[0])[0] if nx > 1 else 1.0
+    out = []
+    for fraction in fractions:
+        j = min(ny - 1, int(fraction * ny))
+        on = index[1] == j
+        a = np.full((nz, nx), np.nan)
+        a[index[2][on], index[0][on]] = gas_fraction[on]
+        if np.isnan(a).any():
+            raise ValueError("the field does not cover every (x, z) cell of a box mesh slice")
+        out.append((a, dx))
+    return out
+
+
 def voids(a):
     """The voids of a[z, x] as lists of (z, x) cells (module docstring)."""
     nz, nx = a.shape

@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Smoke test of cases/coarse_graining/fluidized/validate.py (issue 29 part 3): the driver at --size smoke (a
+20 mm bed of 800 beads, 0.3 s per variant, about 1.5 min on 1 core). The physics of so small a bed means
+nothing; the test checks that
+  * the driver ran the fine bed and the three coarse variants and wrote the table with every row (3 variants
+    x 5 quantities), the fine bed's U_mf, dp/(W/A) and expansion numbers;
+  * each coarse run had its parcels (np 8, np 27, 5 mm parcels of both classes) and the fine bed's solid mass
+    to within one of its largest parcels;
+  * the inlet ramped (the bed's case.yaml has the ramp) and the fine bed's pressure drop rose with it;
+  * the temporary folder is removed and nothing is left in the working folder.
+
+usage: fluidized_smoke.py PARCELFLOW MPIEXEC... -np N
+"""
+import csv
+import math
+import os
+import shlex
+import sys
+import tempfile
+
+import yaml
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+from parcelflow_runs import CASES, expect_nothing_left, fail, run  # noqa: E402
+
+DRIVER = os.path.join(CASES, "coarse_graining", "fluidized", "validate.py")
+PARCELS = {"fine": (1, 1, 1.5, 2.5), "np8_linear": (8, 8, 3.0, 5.0), "np27_linear": (27, 27, 4.5, 7.5),
+           "d5mm_linear": (37.04, 8, 5.0, 5.0)}  # np small, np large, D small, D large [mm]
+QUANTITIES = ("u_mf", "dp_over_weight", "expansion", "bubbles_per_slice", "bubble_width_mm")
+
+
+def main():
+    parcelflow, mpirun = sys.argv[1], sys.argv[2:]
+    ranks = mpirun[mpirun.index("-np") + 1]
+    del mpirun[mpirun.index("-np"):mpirun.index("-np") + 2]  # coarse_graining.py appends its own
+    here_before = set(os.listdir("."))
+    with tempfile.TemporaryDirectory(prefix="pf_cg_fluidized_") as work:
+        stdout = run([sys.executable, DRIVER, parcelflow, "--size", "smoke", "--runs", work, "--ranks", ranks,
+                      "--mpirun", shlex.join(mpirun)], timeout=900)
+        print(stdout)
+        if "table written" not in stdout:
+            fail("validate.py wrote no table")
+        check_table(os.path.join(work, "coarse_graining_fluidized.csv"))
+        check_beds(os.path.join(work, "coarse_graining.csv"))
+        check_ramp(work)
+    expect_nothing_left(work, here_before)
+    print("PASS")
+
+
+def check_table(path):
+    rows = list(csv.DictReader(open(path)))
+    for variant in PARCELS:
+        if variant == "fine":
+            continue
+        names = [r["quantity"] for r in rows if r["variant"] == variant]
+        if names != list(QUANTITIES):
+            fail(f"table: rows {names} for {variant}, expected {list(QUANTITIES)}")
+    if len(rows) != 3 * len(QUANTITIES):
+        fail(f"table: {len(rows)} rows, expected {3 * len(QUANTITIES)}")
+    for r in rows:
+        if r["quantity"] in ("u_mf", "dp_over_weight", "expansion") and not math.isfinite(float(r["fine"])):
+            fail(f"table: no fine value in row {r}")
+        if r["pass"] not in ("True", "False"):
+            fail(f"table: pass {r['pass']!r} in row {r}")
+
+
+def check_beds(path):
+    beds = {r["variant"]: r for r in csv.DictReader(open(path))}
+    for variant, (np_small, np_large, d_small, d_large) in PARCELS.items():
+        bed = beds.get(variant)
+        if bed is None:
+            fail(f"coarse_graining.csv has no row of {variant}")
+        for key, expected in (("np_small", np_small), ("np_large", np_large), ("D_small_mm", d_small),
+                              ("D_large_mm", d_large)):
+            if abs(float(bed[key]) / expected - 1) > 1e-3:
+                fail(f"{variant}: {key} {bed[key]}, expected {expected}")
+        if abs(float(bed["mass_vs_fine_parcels"])) > 1.0:
+            fail(f"{variant}: solid mass differs from the fine bed's by {bed['mass_vs_fine_parcels']} parcels")
+
+
+def check_ramp(work):
+    inlet = yaml.safe_load(open(os.path.join(work, "bed", "case.yaml")))["boundaries"]["zmin"]
+    if not inlet.get("ramp_time", 0) > 0:
+        fail(f"the bed's inlet has no ramp: {inlet}")
+    rows = list(csv.DictReader(open(os.path.join(work, "fine", "run", "monitors.csv"))))
+    dp = [float(r["bed_pressure_drop"]) for r in rows]
+    early, late = sum(dp[1:6]) / 5, sum(dp[-5:]) / 5
+    if not late > 2 * early > 0:
+        fail(f"the fine bed's pressure drop did not rise with the inlet: {early:.4g} Pa early, {late:.4g} Pa late")
+
+
+if __name__ == "__main__":
+    main()
