@@ -22,7 +22,7 @@ struct DragInput {
 // Per-case constants a law may need, given once when the law is made (makeDragLaw(name, context)) and
 // stored in it: nothing is looked up per parcel. Laws that need none ignore it.
 struct DragLawContext {
-  double filterSize = 0.0;       // filter width Delta [m]: the gas cell size (V_cell)^(1/3)
+  double filterSize = 0.0;       // filter width Delta [m]: filter_cells x the gas cell size (V_cell)^(1/3)
   double gravity = 0.0;          // |g| [m/s^2]
   double particleDensity = 0.0;  // density of the real particles [kg/m^3]
 };

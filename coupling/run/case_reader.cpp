@@ -77,9 +77,12 @@ FilteredDragSettings readFilteredDrag(const YamlSection& s, const std::string& d
     s.fail("filtered_drag", "is required by coupling.drag: " + filtered +
                                 ", e.g. filtered_drag: {particle_density: 1500} (kg/m^3 of the real particles)");
   const YamlSection f = s.map("filtered_drag");
-  f.allowOnly({"particle_density"});
+  f.allowOnly({"particle_density", "filter_cells"});
   FilteredDragSettings settings;
   settings.particle_density = f.number("particle_density", std::nullopt, Range::positive());
+  // The filter averages over at least the resolved cell; wider filters (coarser than the mesh) are the
+  // model's own variable, for a filter-size study at a fixed mesh.
+  settings.filter_cells = f.number("filter_cells", settings.filter_cells, Range::closed(1.0, 10.0));
   return settings;
 }
 

@@ -163,7 +163,8 @@ void CoupledRun::initialize() {
   kernel_options.gaussianParcelFactor = cs.coupling.kernel.parcel_scale;
   kernel_options.gaussianReflectAtFaces = cs.coupling.kernel.boundary == "reflect";
   DragLawContext drag_context;  // per-case constants of the filtered law (the others ignore them)
-  drag_context.filterSize = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
+  drag_context.filterSize =
+      cs.coupling.filtered_drag.filter_cells * std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
   drag_context.gravity = s.case_def.gas.gas.gravity.norm();
   drag_context.particleDensity = cs.coupling.filtered_drag.particle_density;
   s.coupler = std::make_unique<ParcelMeshCoupler>(

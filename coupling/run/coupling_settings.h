@@ -48,6 +48,7 @@ struct GuardSettings {
 // coupling.filtered_drag: required by, and only allowed with, coupling.drag: RadlSundaresanFilteredBVK.
 struct FilteredDragSettings {
   double particle_density = 0.0;  // kg/m^3 of every real particle (for its terminal velocity); > gas.density
+  double filter_cells = 1.0;      // filter width Delta in gas cells: Delta = filter_cells (V_cell)^(1/3)
 };
 
 struct CouplingSettings {

@@ -61,6 +61,11 @@ TEST(FilteredDragConfig, ReadsTheParticleDensity) {
       std::string(kCase) + "coupling: {drag: RadlSundaresanFilteredBVK, filtered_drag: {particle_density: 1500}}\n"));
   EXPECT_EQ(s.coupling.drag, "RadlSundaresanFilteredBVK");
   EXPECT_EQ(s.coupling.filtered_drag.particle_density, 1500.0);
+  EXPECT_EQ(s.coupling.filtered_drag.filter_cells, 1.0);  // the cell, unless given
+  const pc::CaseSettings wide = pc::readCouplingSettings(YAML::Load(
+      std::string(kCase) + "coupling: {drag: RadlSundaresanFilteredBVK, filtered_drag: {particle_density: 1500, "
+                           "filter_cells: 2}}\n"));
+  EXPECT_EQ(wide.coupling.filtered_drag.filter_cells, 2.0);
   EXPECT_EQ(caseError("coupling: {drag: RadlSundaresanFilteredBVK, filtered_drag: {particle_density: 1500}}\n"
                       "gas: {density: 1.2, viscosity: 1.8e-5, gravity: [0, 0, -9.81]}\n"),
             "");
@@ -88,6 +93,9 @@ TEST(FilteredDragConfig, ValuesAreRangeChecked) {
   expectMentions(couplingError("{drag: RadlSundaresanFilteredBVK, filtered_drag: {particle_density: 1500, "
                                "filter_size: 0.1}}"),
                  {"coupling.filtered_drag.filter_size", "particle_density"});
+  expectMentions(couplingError("{drag: RadlSundaresanFilteredBVK, filtered_drag: {particle_density: 1500, "
+                               "filter_cells: 0.5}}"),
+                 {"coupling.filtered_drag.filter_cells", "0.5", "[1, 10]"});
   // particles lighter than the gas have no terminal velocity; without gravity there is no length scale
   expectMentions(caseError("coupling: {drag: RadlSundaresanFilteredBVK, filtered_drag: {particle_density: 1.0}}\n"
                            "gas: {density: 1.2, viscosity: 1.8e-5}\n"),
