@@ -46,12 +46,13 @@ QUANTITIES = {
 }
 
 # The bed per size. Full: 75 x 75 mm (the 7.5 mm np 27 parcels are 10 across), 45,000 beads (a static bed of
-# about 40 mm), 3.26 mm cells (the Goldschmidt case's size), 0.15 m tall. The inlet reaches 1.8 m/s, about
-# 1.6-1.8 U_mf of the mixture (Wen-Yu: 0.84 m/s for 1.5 mm, 1.26 m/s for 2.5 mm beads). Smoke: a 20 mm bed of
-# 800 beads for 0.3 s, to check that the driver and the codes run (not the physics).
+# about 40 mm), 3.26 mm cells (the Goldschmidt case's size), 0.15 m tall. The inlet reaches 1.3 m/s, about
+# 1.9 U_mf of the fine bed (a first ramp to 1.8 m/s reached the beads' weight at about 0.7 m/s; Wen-Yu's
+# correlation gives 0.84 m/s for 1.5 mm and 1.26 m/s for 2.5 mm beads). Smoke: a 20 mm bed of 800 beads for
+# 0.3 s, to check that the driver and the codes run (not the physics).
 SIZES = {
     "full": {"width": 0.075, "height": 0.15, "nbeads": 45000, "fill_top": 0.094, "settle_steps": 5000,
-             "cells": [23, 23, 46], "end": 7.0, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.8},
+             "cells": [23, 23, 46], "end": 7.0, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.3},
     "smoke": {"width": 0.02, "height": 0.08, "nbeads": 800, "fill_top": 0.030, "settle_steps": 2000,
               "cells": [6, 6, 24], "end": 0.3, "ramp_time": 0.2, "window": 0.2, "hold_velocity": 1.8},
 }
