@@ -1,5 +1,6 @@
 #include "primitive.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "config_error.hpp"
@@ -26,8 +27,17 @@ Primitive Primitive::cylinder(double cx, double cy, double radius, double zmin, 
   return p;
 }
 
+Primitive Primitive::cone(double cx, double cy, double radiusZmin, double radiusZmax, double zmin,
+                          double zmax) {
+  Primitive p = cylinder(cx, cy, std::max(radiusZmin, radiusZmax), zmin, zmax);
+  p.kind_ = Kind::Cone;
+  p.radius_ = radiusZmin;
+  p.radiusTop_ = radiusZmax;
+  return p;
+}
+
 Primitive Primitive::fromYaml(const YamlSection& section) {
-  const std::string kind = section.singleKey({"box", "cylinder"});
+  const std::string kind = section.singleKey({"box", "cylinder", "cone"});
   const YamlSection s = section.map(kind);
   if (kind == "box") {
     s.allowOnly({"min", "max"});
@@ -36,6 +46,17 @@ Primitive Primitive::fromYaml(const YamlSection& section) {
     for (int c = 0; c < 3; ++c)
       if (!(hi[c] > lo[c])) s.fail("max", "must be larger than min in every component");
     return box(lo, hi);
+  }
+  if (kind == "cone") {
+    s.allowOnly({"center", "radius_zmin", "radius_zmax", "zmin", "zmax"});
+    const double r0 = s.number("radius_zmin", std::nullopt, Range::nonNegative());
+    const double r1 = s.number("radius_zmax", std::nullopt, Range::nonNegative());
+    if (!(r0 > 0 || r1 > 0)) s.fail("radius_zmax", "must be positive when radius_zmin is 0");
+    const double zmin = s.number("zmin", std::nullopt, Range::any());
+    const double zmax = s.number("zmax", std::nullopt, Range::any());
+    if (!(zmax > zmin)) s.fail("zmax", "must be larger than zmin");
+    const auto xy = s.numbers("center", 2, Range::any());
+    return cone(xy[0], xy[1], r0, r1, zmin, zmax);
   }
   s.allowOnly({"center", "radius", "zmin", "zmax"});
   const double radius = s.number("radius", std::nullopt, Range::positive());
@@ -50,13 +71,18 @@ bool Primitive::contains(const Vec3& x) const {
   if (kind_ == Kind::Box)
     return x[0] >= lo_[0] && x[0] <= hi_[0] && x[1] >= lo_[1] && x[1] <= hi_[1] && x[2] >= lo_[2] &&
            x[2] <= hi_[2];
+  if (x[2] < lo_[2] || x[2] > hi_[2]) return false;
   const double dx = x[0] - cx_, dy = x[1] - cy_;
-  return x[2] >= lo_[2] && x[2] <= hi_[2] && dx * dx + dy * dy <= radius_ * radius_;
+  const double r = kind_ == Kind::Cone ? radius_ + (radiusTop_ - radius_) * (x[2] - lo_[2]) / (hi_[2] - lo_[2])
+                                       : radius_;
+  return dx * dx + dy * dy <= r * r;
 }
 
 double Primitive::volume() const {
   if (kind_ == Kind::Box) return (hi_ - lo_).prod();
-  return M_PI * radius_ * radius_ * (hi_[2] - lo_[2]);
+  const double h = hi_[2] - lo_[2];
+  if (kind_ == Kind::Cone) return M_PI * h * (radius_ * radius_ + radius_ * radiusTop_ + radiusTop_ * radiusTop_) / 3;
+  return M_PI * radius_ * radius_ * h;
 }
 
 }  // namespace parcelflow::cfd

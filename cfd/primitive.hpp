@@ -1,7 +1,8 @@
 #pragma once
 // A geometric primitive used to select fluid cells and to define regions (inlet regions, partition
-// weights): an axis-aligned box or a cylinder along z. A cell belongs to it when its centre is inside
-// (staircase walls); cut cells would replace this test, not the data structure.
+// weights): an axis-aligned box, a cylinder along z or a cone frustum along z (a radius at each end). A
+// cell belongs to it when its centre is inside (staircase walls); the cut-cell geometry turns the same
+// primitives into a triangulated surface instead (surface_from_geometry.hpp).
 #include <string>
 
 #include "types.hpp"
@@ -12,23 +13,35 @@ class YamlSection;
 
 class Primitive {
  public:
-  enum class Kind { Box, Cylinder };
+  enum class Kind { Box, Cylinder, Cone };
 
   static Primitive box(const Vec3& lo, const Vec3& hi);
   static Primitive cylinder(double cx, double cy, double radius, double zmin, double zmax);
-  // Reads `{box: {min: [..], max: [..]}}` or `{cylinder: {center: [x, y], radius, zmin, zmax}}` from
-  // the section holding that single key.
+  // Frustum along z: radius `radiusZmin` at zmin, `radiusZmax` at zmax (one of them may be 0: a cone).
+  static Primitive cone(double cx, double cy, double radiusZmin, double radiusZmax, double zmin, double zmax);
+  // Reads `{box: {min: [..], max: [..]}}`, `{cylinder: {center: [x, y], radius, zmin, zmax}}` or
+  // `{cone: {center: [x, y], radius_zmin, radius_zmax, zmin, zmax}}` from the section holding that
+  // single key.
   static Primitive fromYaml(const YamlSection& section);
 
   bool contains(const Vec3& x) const;
   Kind kind() const { return kind_; }
+  // Box corners, or the bounding box of a cylinder or cone.
+  const Vec3& lo() const { return lo_; }
+  const Vec3& hi() const { return hi_; }
+  // Axis position (cylinder, cone) and the radius at zmin and at zmax (equal for a cylinder).
+  double axisX() const { return cx_; }
+  double axisY() const { return cy_; }
+  double radiusAtZmin() const { return radius_; }
+  double radiusAtZmax() const { return kind_ == Kind::Cone ? radiusTop_ : radius_; }
   // Approximate volume, for reporting only.
   double volume() const;
 
  private:
   Kind kind_ = Kind::Box;
   Vec3 lo_ = Vec3::Zero(), hi_ = Vec3::Zero();  // box corners, or cylinder bounding box
-  double cx_ = 0, cy_ = 0, radius_ = 0;
+  double cx_ = 0, cy_ = 0, radius_ = 0;  // radius_: of the cylinder, or of the cone at zmin
+  double radiusTop_ = 0;                   // cone: radius at zmax
 };
 
 }  // namespace parcelflow::cfd

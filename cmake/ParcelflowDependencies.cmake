@@ -63,6 +63,12 @@ if(PARCELFLOW_WITH_LIGGGHTS)
   target_link_libraries(parcelflow_liggghts INTERFACE ${LIGGGHTS_LIBRARY} MPI::MPI_CXX)
 endif()
 
+# CGAL (header-only since 5.0; needs GMP and MPFR, which libcgal-dev pulls in): the cut-cell geometry's
+# clipping and booleans (cfd/cut_cell_geometry.cpp; cfd/CMakeLists.txt keeps its compile options on
+# those files). CGAL's config finds GMP and MPFR (libcgal-dev depends on libgmp-dev and libmpfr-dev).
+find_package(CGAL 5.0 QUIET)
+parcelflow_require(CGAL_FOUND "CGAL" "libcgal-dev")
+
 find_program(MPIEXEC_EXECUTABLE NAMES mpirun mpiexec)
 # Debian's python3 is the one that sees python3-numpy/-h5py/-matplotlib; prefer it over any other
 # python3 earlier on PATH (pyenv and the like).
