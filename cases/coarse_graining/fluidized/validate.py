@@ -83,8 +83,12 @@ def make_bed(size, runs):
 
 
 def packed_branch_umf(velocity, dp, plateau):
-    """U where the least-squares fit dp = a U + b U^2 of the packed points reaches the plateau (nan if none)."""
-    packed = (dp < PACKED_SHARE * plateau) & (velocity > 0.05 * velocity.max())
+    """U where the least-squares fit dp = a U + b U^2 of the packed points reaches the plateau (nan if none).
+    Packed: the ramp's points before dp first reaches PACKED_SHARE of the plateau (a fluidized bed's pressure
+    drop dips below that share too, and those points are not on the packed branch)."""
+    reached = np.nonzero(dp >= PACKED_SHARE * plateau)[0]
+    before = np.arange(len(dp)) < (reached[0] if len(reached) else len(dp))
+    packed = before & (velocity > 0.05 * velocity.max())
     if packed.sum() < 5:
         return math.nan
     design = np.column_stack([velocity[packed], velocity[packed] ** 2])
