@@ -6,8 +6,8 @@ of both classes, with one table: quantity, fine, coarse, difference, tolerance, 
 The bed is cases/goldschmidt_segregation with another box (its script takes width, depth, height and the
 bead count), so every variant is made by that case's `coarse_graining.py` (same solid mass, parcels, contact
 scaling, DEM step). The inlet velocity rises linearly from 0 to HOLD_VELOCITY over RAMP_TIME and then holds:
-- U_mf: the packed branch dp = a U + b U^2 (Ergun's form), fitted to the ramp's points below PACKED_SHARE of the
-  fluidized plateau, meets the plateau (the mean bed pressure drop over the window);
+- U_mf: the packed branch dp = a U + b U^2 (Ergun's form), fitted to the ramp's points before dp first reaches
+  PACKED_SHARE of the fluidized plateau, meets the plateau (the mean bed pressure drop over the window);
 - over the window (the hold): dp/(W/A), the bed expansion (the mass-weighted mean height of the beads over
   the window against the settled bed's at the first monitor row), bubbles per slice and their width
   (`void_shape.py` on three slices across the depth, at 1/4, 1/2 and 3/4).
