@@ -100,13 +100,14 @@ CouplingSettings readCoupling(const YamlSection& s) {
     if (k.has("width"))
       k.fail("width", "was renamed to coupling.kernel.sharpness: it is the a of exp(-a |dx|^2/h^2) (paper eq. 8), "
                       "so a larger value makes the kernel narrower, not wider");
-    k.allowOnly({"type", "sharpness", "radius", "length_scale", "parcel_scale", "boundary"});
+    k.allowOnly({"type", "sharpness", "radius", "length_scale", "parcel_scale", "boundary", "smoothing_length"});
     c.kernel.type = k.word("type", c.kernel.type, {"gaussian", "centroid"});
     c.kernel.sharpness = k.number("sharpness", c.kernel.sharpness, Range::positive());
     c.kernel.radius = k.integer("radius", c.kernel.radius, 1, 4);
     c.kernel.length_scale = k.word("length_scale", c.kernel.length_scale, {"cell_volume", "cell_axes"});
     c.kernel.parcel_scale = k.number("parcel_scale", c.kernel.parcel_scale, Range::closed(0.0, 4.0));
     c.kernel.boundary = k.word("boundary", c.kernel.boundary, {"truncate", "reflect"});
+    c.kernel.smoothing_length = k.number("smoothing_length", c.kernel.smoothing_length, Range::nonNegative());
   }
   return c;
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "cfd/config_error.hpp"
+#include "cfd/diffusion_smoother.hpp"
 #include "cfd/field_writer.hpp"
 #include "cfd/gas_checkpoint.hpp"
 #include "cfd/gas_solver.hpp"
@@ -52,6 +53,7 @@ struct CoupledRun::State {
   std::unique_ptr<TimeAverages> averages;  // when monitors.average is set
   std::unique_ptr<RunWarnings> warnings;
   std::unique_ptr<BlowupGuard> guard;
+  std::unique_ptr<cfd::DiffusionSmoother> smoother;  // coupling.kernel.smoothing_length > 0
 
   int dem_steps = 1;
   LoopState loop;        // step, time, next output times (its counters are only used in checkpoints)
@@ -172,6 +174,9 @@ void CoupledRun::initialize() {
       makeDragLaw(cs.coupling.drag, drag_context), DragLimits{cs.coupling.gas_fraction_floor},
       GasProperties{s.case_def.gas.gas.density, s.case_def.gas.gas.viscosity});
 
+  if (cs.coupling.kernel.smoothing_length > 0.0)
+    s.smoother = std::make_unique<cfd::DiffusionSmoother>(mesh, cs.coupling.kernel.smoothing_length);
+
   s.dem->start(checkpoint ? checkpoint->paths.dem : std::string());
   s.dem_steps = cs.time.demStepsPerGasStep();
   s.loop.initial_parcels = s.dem->parcels().globalCount();
@@ -236,6 +241,7 @@ bool CoupledRun::advance() {
   s.counters.orphans += static_cast<long>(transfer.orphans);
   s.counters.fallbacks += static_cast<long>(transfer.fallbacks);
   s.coupler->depositSolids(s.solids.solid_fraction);
+  if (s.smoother) s.smoother->apply(s.solids.solid_fraction);
   s.gas_fraction.resize(n_owned);
   for (int c = 0; c < n_owned; ++c) {
     const double a = 1.0 - s.solids.solid_fraction[c];

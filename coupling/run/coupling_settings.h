@@ -35,6 +35,9 @@ struct KernelSettings {
   // at the faces of the background box: "truncate" (the part beyond a face is dropped before the weights
   // are renormalised) or "reflect" (it is folded back onto the mirror cells: image parcels)
   std::string boundary = "truncate";
+  // L [m]: the deposited solids fraction is smoothed by implicit diffusion over L (cfd/diffusion_smoother.hpp:
+  // conservative, no flux through the boundaries); 0: not smoothed
+  double smoothing_length = 0.0;
 };
 
 // Limits beyond which a run counts as diverged (run/blowup_guard.h); the defaults are far above what the

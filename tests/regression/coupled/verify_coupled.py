@@ -3,6 +3,10 @@
 
   terminal NP   one parcel (np = NP, real diameter 100 um) settling in still air must reach the Wen-Yu
                 terminal velocity, solved here by bisection, within 1 %.
+  smoothed      the fluidized_column bed with coupling.kernel.smoothing_length one cell (4 mm) and without:
+                the solids volume of the gas-fraction field (sum (1 - a_g) V) must equal the parcels' volume
+                (sum np pi/6 dp^3) to 1e-9 with smoothing (conservative, no flux through the walls), and the
+                cell-to-cell scatter of a_g in the bed must fall (rms of the differences of neighbours in x).
   packed        the fluidized_column bed at 0.3 m/s (below minimum fluidization) with the Ergun drag law:
                 the pressure drop between the cell layers at 6 and 14 mm must equal, within 3 %, the
                 Ergun pressure drop for the bed's measured voidage. The voidage is read per cell from the
@@ -102,11 +106,44 @@ def check_packed(parcelflow, launcher):
     return abs(error) < 0.03
 
 
+def check_smoothed(parcelflow, launcher):
+    def bed_fields(smoothing):
+        def edit(s):
+            s["time"]["end"] = 0.004
+            s["output"]["fields_interval"] = 0.002
+            s["output"]["parcels_interval"] = 0.002
+            if smoothing:
+                s["coupling"]["kernel"]["smoothing_length"] = 0.004
+        out = run_case(parcelflow, launcher, os.path.join(CASES, "fluidized_column"), edit)
+        field = h5py.File(os.path.join(out, "fields_000001.h5"))
+        mesh = h5py.File(os.path.join(out, "fields_mesh.h5"))
+        parcels = h5py.File(os.path.join(out, "parcels_000001.h5"))
+        ids, a = mesh["global_id"][:], field["gas_fraction"][:].ravel()
+        cell_volume = 0.004 ** 3
+        solids = float(((1 - a) * cell_volume).sum())
+        dp, np_ = parcels["dp"][:].ravel(), parcels["np"][:].ravel()
+        parcel_volume = float((np_ * math.pi / 6 * dp ** 3).sum())
+        grid = {int(g): e for g, e in zip(ids, a)}
+        # neighbours in x in the lowest 3 layers (the packed bed), 5 x 5 x 25 cells
+        diffs = [grid[g] - grid[g + 1] for g in grid if g // 25 < 3 and g % 5 < 4]
+        return solids, parcel_volume, math.sqrt(sum(d * d for d in diffs) / len(diffs))
+    plain, volume, scatter = bed_fields(False)
+    smoothed, volume_s, scatter_s = bed_fields(True)
+    error = smoothed / volume_s - 1
+    print(f"[measured] solids volume of the field / parcels' volume - 1: smoothed {error:.2e}, unsmoothed "
+          f"{plain / volume - 1:.2e}; rms a_g difference of x-neighbours in the bed: {scatter:.4f} unsmoothed, "
+          f"{scatter_s:.4f} smoothed over 4 mm")
+    return abs(error) < 1e-9 and scatter_s < 0.5 * scatter
+
+
 def main():
     sep = sys.argv.index("--")
     parcelflow, launcher = sys.argv[1], sys.argv[2:sep]
     check, args = sys.argv[sep + 1], sys.argv[sep + 2:]
-    ok = check_terminal(parcelflow, launcher, int(args[0])) if check == "terminal" else check_packed(parcelflow, launcher)
+    checks = {"terminal": lambda: check_terminal(parcelflow, launcher, int(args[0])),
+              "packed": lambda: check_packed(parcelflow, launcher),
+              "smoothed": lambda: check_smoothed(parcelflow, launcher)}
+    ok = checks[check]()
     print(f"{1 if ok else 0} passed, {0 if ok else 1} failed")
     return 0 if ok else 1
 

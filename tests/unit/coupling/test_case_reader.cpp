@@ -41,6 +41,7 @@ TEST(CaseReader, ReadsValuesAndDefaults) {
   EXPECT_EQ(s.coupling.kernel.length_scale, "cell_volume");
   EXPECT_EQ(s.coupling.kernel.parcel_scale, 0.0);
   EXPECT_EQ(s.coupling.kernel.boundary, "truncate");
+  EXPECT_EQ(s.coupling.kernel.smoothing_length, 0.0);
   EXPECT_FALSE(s.monitors.has_bed_pressure_drop);
 }
 
@@ -54,6 +55,8 @@ TEST(CaseReader, ErrorsNameKeyValueAndAllowed) {
                  {"coupling.kernel.parcel_scale", "-1", "[0, 4]"});
   expectMentions(errorOf("coupling: {kernel: {type: gaussian, boundary: mirror}}\n"),
                  {"coupling.kernel.boundary", "mirror", "truncate", "reflect"});
+  expectMentions(errorOf("coupling: {kernel: {type: gaussian, smoothing_length: -0.002}}\n"),
+                 {"coupling.kernel.smoothing_length", "-0.002"});
   expectMentions(errorOf("coupling: {gas_fraction_floor: 1.5}\n"), {"coupling.gas_fraction_floor", "1.5"});
   expectMentions(errorOf("monitors: {bed_pressure_drop: [0.05, 0.01]}\n"), {"monitors.bed_pressure_drop", "z_low < z_high"});
   expectMentions(errorOf("output: {monitor_interval: -1}\n"), {"output.monitor_interval", "-1"});
