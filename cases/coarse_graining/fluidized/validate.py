@@ -13,7 +13,7 @@ scaling, DEM step). The inlet velocity rises linearly from 0 to HOLD_VELOCITY ov
   (`void_shape.py` on three slices across the depth, at 1/4, 1/2 and 3/4).
 A variant that finished before with the same settings is not run again (coarse_graining.py keeps it).
 
-usage: validate.py PARCELFLOW [--runs DIR] [--size smoke|full] [--ranks N] [--mpirun CMD] [--require-pass]
+usage: validate.py PARCELFLOW [--runs DIR] [--size smoke|full|periodic] [--ranks N] [--mpirun CMD] [--require-pass]
 """
 import argparse
 import csv
@@ -49,10 +49,15 @@ QUANTITIES = {
 # about 40 mm), 3.26 mm cells (the Goldschmidt case's size), 0.15 m tall. The inlet reaches 1.3 m/s, about
 # 1.9 U_mf of the fine bed (a first ramp to 1.8 m/s reached the beads' weight at about 0.7 m/s; Wen-Yu's
 # correlation gives 0.84 m/s for 1.5 mm and 1.26 m/s for 2.5 mm beads). Smoke: a 20 mm bed of 800 beads for
-# 0.3 s, to check that the driver and the codes run (not the physics).
+# 0.3 s, to check that the driver and the codes run (not the physics). Periodic: a quarter of the full bed's
+# area (37.5 x 37.5 mm, 11,250 beads, 3.125 mm cells) with periodic sides for the parcels and free-slip side
+# walls for the gas, a cut from an unbounded bed: no wall for the parcels' packing to loosen against.
 SIZES = {
     "full": {"width": 0.075, "height": 0.15, "nbeads": 45000, "fill_top": 0.094, "settle_steps": 5000,
              "cells": [23, 23, 46], "end": 7.0, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.3},
+    "periodic": {"width": 0.0375, "height": 0.15, "nbeads": 11250, "fill_top": 0.094, "settle_steps": 5000,
+                 "cells": [12, 12, 48], "end": 7.0, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.3,
+                 "periodic_sides": True},
     "smoke": {"width": 0.02, "height": 0.08, "nbeads": 800, "fill_top": 0.030, "settle_steps": 2000,
               "cells": [6, 6, 24], "end": 0.3, "ramp_time": 0.2, "window": 0.2, "hold_velocity": 1.8},
 }
@@ -72,6 +77,10 @@ def make_bed(size, runs):
     config["mesh"]["lengths"] = [width, width, height]
     config["mesh"]["cells"] = geometry["cells"]
     config["time"]["end"] = geometry["end"]
+    if geometry.get("periodic_sides"):
+        config["liggghts"]["variables"]["periodic_sides"] = "1"
+        for side in ("xmin", "xmax", "ymin", "ymax"):
+            config["boundaries"][side] = {"type": "wall", "slip": "free_slip"}
     config["boundaries"]["zmin"] = {"type": "velocity_inlet", "superficial_velocity": [0, 0, geometry["hold_velocity"]],
                                     "ramp_time": geometry["ramp_time"]}
     top = height - 2 * height / geometry["cells"][2]  # a plane below the outlet cells

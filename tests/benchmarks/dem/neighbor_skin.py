@@ -35,8 +35,8 @@ def main():
     parser.add_argument("--checkpoint", help="a checkpoint of a run of --case instead of establishing one")
     parser.add_argument("--establish", type=float, default=0.5, help="simulated time to the measured state [s]")
     parser.add_argument("--steps", type=int, default=2400, help="DEM steps per run")
-    parser.add_argument("--skins", type=float, nargs="+", default=[0.0005, 0.00025, 0.00075, 0.001, 0.0015],
-                        help="skins [m]; the first is the reference of the per-round ratios")
+    parser.add_argument("--skins", type=float, nargs="+", default=[0.001, 0.0005, 0.00075, 0.0015],
+                        help="skins [m]; the first (the Goldschmidt case's) is the reference of the per-round ratios")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--mpiexec", nargs=argparse.REMAINDER, default=["mpirun"])

@@ -20,6 +20,7 @@ usage: goldschmidt_smoke.py PARCELFLOW MPIEXEC...
 import csv
 import math
 import os
+import re
 import sys
 import xml.etree.ElementTree as ElementTree
 
@@ -56,7 +57,9 @@ thermo 12
 def store_wall_forces(script):
     """The case's script with every wall storing its force on the beads, printed every gas step."""
     text = open(script).read()
-    lines = [line + " store_force yes" if " wall/gran " in line else line for line in text.splitlines()]
+    # inside the quotes of a wall that an `if ... then "..." &` line defines (the side walls)
+    wall = re.compile(r'^(.* wall/gran [^"]*?)("?\s*&?\s*)$')
+    lines = [wall.sub(r"\1 store_force yes\2", line) for line in text.splitlines()]
     open(script, "w").write("\n".join(lines) + WALL_FORCE_THERMO)
 
 
