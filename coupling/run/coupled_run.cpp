@@ -184,6 +184,7 @@ void CoupledRun::initialize() {
   if (cs.coupling.kernel.type == GaussianKernel::typeName)  // h of the cell_volume length scale
     kernel_reach.length = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
   kernel_reach.parcel_scale = cs.coupling.kernel.parcel_scale;
+  kernel_reach.smoothing_length = cs.coupling.kernel.smoothing_length;
   kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
                                             grid.spacing[2] * grid.cells[2]});
   const cfd::LinearSolverSettings& pressure = s.case_def.gas.solver.pressure;

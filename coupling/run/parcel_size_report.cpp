@@ -18,13 +18,16 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
   if (reach.length > 0.0) {
     const double ratio = D / reach.length;
     const bool widened = reach.parcel_scale * D > reach.length;
+    const bool smoothed = reach.smoothing_length >= kSmoothingLengthOverDiameter * D;
     lines.back() += formatNumbers("; D / kernel length h (%.4g mm) = %.3g", 1e3 * reach.length, ratio);
     if (widened) lines.back() += formatNumbers(", spread over parcel_scale D = %.4g mm", 1e3 * reach.parcel_scale * D);
-    if (ratio > kLargestDiameterOverKernelLength && !widened)
+    if (reach.smoothing_length > 0.0)
+      lines.back() += formatNumbers(", solids fraction smoothed over %.4g mm", 1e3 * reach.smoothing_length);
+    if (ratio > kLargestDiameterOverKernelLength && !widened && !smoothed)
       lines.push_back(formatNumbers("parcelflow: warning: parcels of D = %.4g mm are %.3g times the kernel length h = "
                              "%.4g mm (limit %.3g): each lands in one or two cells and the gas-fraction floor is "
-                             "hit often; coupling.kernel.parcel_scale (e.g. 2) spreads a parcel over its own "
-                             "size (coupling/README.md)",
+                             "hit often; coupling.kernel.smoothing_length (about D/2) or parcel_scale spreads "
+                             "it (coupling/README.md)",
                              1e3 * D, ratio, 1e3 * reach.length, kLargestDiameterOverKernelLength));
   }
   if (across < kParcelsAcrossTheNarrowestExtent)

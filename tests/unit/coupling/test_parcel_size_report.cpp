@@ -37,6 +37,15 @@ TEST(ParcelSizeReport, AWidenedKernelAndAWideBedAreWithinTheLimits) {
   const auto lines = pc::parcelSizeReport({0.005, 8.0}, widened);
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_TRUE(mentions(lines[0], "spread over parcel_scale D = 10 mm")) << lines[0];
+  // smoothed over at least D/2 instead: no kernel warning, and the description says so
+  pc::KernelReach smoothed = widened;
+  smoothed.parcel_scale = 0.0;
+  smoothed.smoothing_length = 0.0025;
+  const auto smooth_lines = pc::parcelSizeReport({0.005, 8.0}, smoothed);
+  ASSERT_EQ(smooth_lines.size(), 1u);
+  EXPECT_TRUE(mentions(smooth_lines[0], "smoothed over 2.5 mm")) << smooth_lines[0];
+  smoothed.smoothing_length = 0.002;  // less than D/2: the warning stays
+  EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0}, smoothed).size(), 2u);
   // np 8 parcels of 3 mm (the np8 bed's small class alone): D/h = 0.72, 5 across: only the second limit
   EXPECT_EQ(pc::parcelSizeReport({0.003, 8.0}, kGoldschmidt).size(), 2u);
 }
