@@ -59,6 +59,30 @@ def copy_case(source, work, edit, prepare=lambda case: None):
     return case
 
 
+def establish_checkpoint(parcelflow, launch, source, work, end):
+    """Runs a copy of case folder `source` coupled to `end` seconds in `work` (no field output, a checkpoint at
+    `end`); returns the case copy's folder and the checkpoint's folder."""
+    def edit(settings):
+        settings.setdefault("output", {}).update({"checkpoint_interval": end, "fields_interval": 0,
+                                                  "progress_interval": 1e6})
+    case = copy_case(source, work, edit)
+    out = os.path.join(work, "out")
+    run(launch + [parcelflow, "run", case, "--output", out, "--end", repr(end)], work)
+    folder = os.path.join(out, "checkpoints")
+    return case, os.path.join(folder, sorted(os.listdir(folder))[-1])
+
+
+def dem_restart_command(launch, parcelflow, script, settings, checkpoint, log):
+    """`parcelflow dem SCRIPT` with the case's script variables and those that make its script read the
+    checkpoint's LIGGGHTS restart (as parcelflow sets them when it continues a checkpoint)."""
+    variables = dict(settings["liggghts"].get("variables", {}), dem_step=repr(settings["time"]["dem_step"]),
+                     restarting="1", restart_file=os.path.join(checkpoint, "dem.restart"))
+    command = launch + [parcelflow, "dem", script, "-log", log]
+    for name, value in variables.items():
+        command += ["-var", name, str(value)]
+    return command
+
+
 def run_case(parcelflow, launcher, source, edit, prepare=lambda case: None):
     """Runs an edited copy of case folder `source` in a new temporary folder; returns the output folder."""
     work = tempfile.mkdtemp(prefix="pf_verify_")

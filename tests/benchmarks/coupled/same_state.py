@@ -24,7 +24,7 @@ import tempfile
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, copy_case, loop_timing, run  # noqa: E402
+from parcelflow_runs import CASES, dem_restart_command, establish_checkpoint, loop_timing, run  # noqa: E402
 
 
 def main():
@@ -39,30 +39,20 @@ def main():
     args = parser.parse_args()
     launch = args.mpiexec + ["-np", str(args.ranks)]
     with tempfile.TemporaryDirectory() as tmp:
-        settings = {}
-
-        def edit(case_settings):
-            case_settings.setdefault("output", {}).update({"checkpoint_interval": args.establish,
-                                                           "fields_interval": 0, "progress_interval": 1e6})
-            settings.update(case_settings)
-
         source = args.case if os.path.isdir(args.case) else os.path.join(CASES, args.case)
         out = os.path.join(tmp, "out")
         if args.checkpoint:
             # unedited: a restart refuses settings that differ, even in how a number is written
             case = os.path.join(tmp, "case")
             shutil.copytree(source, case, ignore=shutil.ignore_patterns("output"))
-            settings.update(yaml.safe_load(open(os.path.join(case, "case.yaml"))))
             checkpoint = os.path.abspath(args.checkpoint)
             args.establish = float(yaml.safe_load(open(os.path.join(checkpoint, "loop.yaml")))["loop"]["time"])
             # a continued run appends to the series of the run that wrote the checkpoint (monitors.csv, the
             # parcel and field files): its output folder without the checkpoints
             shutil.copytree(os.path.join(checkpoint, "..", ".."), out, ignore=shutil.ignore_patterns("checkpoints"))
         else:
-            case = copy_case(source, tmp, edit)
-            run(launch + [args.parcelflow, "run", case, "--output", out, "--end", repr(args.establish)], tmp)
-            checkpoint = sorted(os.listdir(os.path.join(out, "checkpoints")))[-1]
-            checkpoint = os.path.join(out, "checkpoints", checkpoint)
+            case, checkpoint = establish_checkpoint(args.parcelflow, launch, source, tmp, args.establish)
+        settings = yaml.safe_load(open(os.path.join(case, "case.yaml")))
         t = settings["time"]
         dem_per_gas = round(t["gas_step"] / t["dem_step"])
         end = args.establish + args.steps * t["gas_step"]
@@ -72,11 +62,8 @@ def main():
         steps = args.steps * dem_per_gas
         with open(os.path.join(case, "in.pure"), "w") as f:
             f.write(f"include {settings['liggghts']['script']}\nrun 0 post no\nrun {steps}\n")
-        variables = dict(settings["liggghts"].get("variables", {}), dem_step=repr(t["dem_step"]), restarting="1",
-                         restart_file=os.path.join(checkpoint, "dem.restart"))
-        command = launch + [args.parcelflow, "dem", "in.pure", "-log", os.path.join(tmp, "log.pure")]
-        for name, value in variables.items():
-            command += ["-var", name, str(value)]
+        command = dem_restart_command(launch, args.parcelflow, "in.pure", settings, checkpoint,
+                                      os.path.join(tmp, "log.pure"))
         pure_out = run(command, case)
         seconds, atoms = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for \d+ steps with (\d+) atoms",
                                     pure_out)[-1]

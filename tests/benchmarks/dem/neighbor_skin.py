@@ -21,7 +21,7 @@ import tempfile
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, copy_case, run  # noqa: E402
+from parcelflow_runs import CASES, dem_restart_command, establish_checkpoint, run  # noqa: E402
 
 LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms")
 BUILDS = re.compile(r"Neighbor list builds = (\d+)")
@@ -49,17 +49,8 @@ def main():
             shutil.copytree(source, case, ignore=shutil.ignore_patterns("output"))
             checkpoint = os.path.abspath(args.checkpoint)
         else:
-            def edit(settings):
-                settings.setdefault("output", {}).update({"checkpoint_interval": args.establish,
-                                                          "fields_interval": 0, "progress_interval": 1e6})
-            case = copy_case(source, tmp, edit)
-            out = os.path.join(tmp, "out")
-            run(launch + [args.parcelflow, "run", case, "--output", out, "--end", repr(args.establish)], tmp)
-            folder = os.path.join(out, "checkpoints")
-            checkpoint = os.path.join(folder, sorted(os.listdir(folder))[-1])
+            case, checkpoint = establish_checkpoint(args.parcelflow, launch, source, tmp, args.establish)
         settings = yaml.safe_load(open(os.path.join(case, "case.yaml")))
-        variables = dict(settings["liggghts"].get("variables", {}), dem_step=repr(settings["time"]["dem_step"]),
-                         restarting="1", restart_file=os.path.join(checkpoint, "dem.restart"))
         times = {skin: [] for skin in args.skins}
         builds, shares = {}, {skin: [] for skin in args.skins}
         for _ in range(args.rounds):
@@ -67,10 +58,7 @@ def main():
                 with open(os.path.join(case, "in.skin"), "w") as f:
                     f.write(f"include {settings['liggghts']['script']}\nneighbor {skin!r} bin\n"
                             f"neigh_modify every 1 delay 0 check yes\nrun 0 post no\nrun {args.steps}\n")
-                command = launch + [args.parcelflow, "dem", "in.skin", "-log", "none"]
-                for name, value in variables.items():
-                    command += ["-var", name, str(value)]
-                output = run(command, case)
+                output = run(dem_restart_command(launch, args.parcelflow, "in.skin", settings, checkpoint, "none"), case)
                 seconds, steps, atoms = LOOP.findall(output)[-1]
                 times[skin].append(float(seconds))
                 builds[skin] = int(BUILDS.findall(output)[-1])
