@@ -7,7 +7,6 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include "cfd/config_error.hpp"
@@ -21,9 +20,6 @@ using namespace parcelflow::cfd::test;
 
 namespace {
 
-std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("parcelflow_cut_cell_" + name)).string();
-}
 
 double totalFluidVolume(const CutCellGeometry& g) {
   double v = 0;
@@ -113,13 +109,11 @@ void checkAlignedBox(const CutCellGeometry& g) {
 
 TEST(CutCellGeometry, AlignedBoxStlAsciiAndBinary) {
   const TriangleSurface box = boxSurface(Vec3(0.25, 0.125, 0), Vec3(0.625, 0.75, 1));
-  const std::string ascii = tempPath("box_ascii.stl"), binary = tempPath("box_binary.stl");
-  writeAsciiStl(box, ascii);
-  writeBinaryStl(box, binary);  // every coordinate is a float: the binary file is exact too
-  checkAlignedBox(CutCellGeometry(readStlSurface(ascii, "geometry.stl"), unitCube, ascii));
-  checkAlignedBox(CutCellGeometry(readStlSurface(binary, "geometry.stl"), unitCube, binary));
-  std::remove(ascii.c_str());
-  std::remove(binary.c_str());
+  const TempFile ascii("box_ascii.stl"), binary("box_binary.stl");
+  writeAsciiStl(box, ascii.path());
+  writeBinaryStl(box, binary.path());  // every coordinate is a float: the binary file is exact too
+  checkAlignedBox(CutCellGeometry(readStlSurface(ascii.path(), "geometry.stl"), unitCube, ascii.path()));
+  checkAlignedBox(CutCellGeometry(readStlSurface(binary.path(), "geometry.stl"), unitCube, binary.path()));
 }
 
 TEST(CutCellGeometry, RotatedBoxStl) {
@@ -127,12 +121,11 @@ TEST(CutCellGeometry, RotatedBoxStl) {
       (Eigen::AngleAxisd(0.3, Vec3::UnitZ()) * Eigen::AngleAxisd(0.7, Vec3(1, 1, 0).normalized())).toRotationMatrix();
   const TriangleSurface box =
       transformed(boxSurface(Vec3(0.35, 0.3, 0.25), Vec3(0.65, 0.7, 0.75)), rotation, Vec3(0.5, 0.5, 0.5));
-  const std::string path = tempPath("rotated_box.stl");
-  writeAsciiStl(box, path);
-  const TriangleSurface read = readStlSurface(path, "geometry.stl");
-  std::remove(path.c_str());
+  const TempFile file("rotated_box.stl");
+  writeAsciiStl(box, file.path());
+  const TriangleSurface read = readStlSurface(file.path(), "geometry.stl");
   const CartesianBackground grid(Vec3(0, 0, 0), Vec3(1, 1, 1), {9, 8, 7});
-  const CutCellGeometry g(read, grid, path);
+  const CutCellGeometry g(read, grid, file.path());
   EXPECT_NEAR(totalFluidVolume(g), 0.3 * 0.4 * 0.5, 1e-12 * 0.06);
   EXPECT_NEAR(totalWallArea(g), 2 * (0.3 * 0.4 + 0.4 * 0.5 + 0.3 * 0.5), 1e-12);
   expectClosedAndConsistent(g);
@@ -141,12 +134,11 @@ TEST(CutCellGeometry, RotatedBoxStl) {
 TEST(CutCellGeometry, SphereWallAreaIsTheSurfaceArea) {
   const TriangleSurface sphere = sphereSurface(Vec3(0.51, 0.49, 0.503), 0.3, 4);  // 5120 triangles
   ASSERT_GT(sphere.volume(), 0);
-  const std::string path = tempPath("sphere.stl");
-  writeAsciiStl(sphere, path);
-  const TriangleSurface read = readStlSurface(path, "geometry.stl");
-  std::remove(path.c_str());
+  const TempFile file("sphere.stl");
+  writeAsciiStl(sphere, file.path());
+  const TriangleSurface read = readStlSurface(file.path(), "geometry.stl");
   const CartesianBackground grid(Vec3(0, 0, 0), Vec3(1, 1, 1), {16, 16, 16});
-  const CutCellGeometry g(read, grid, path);
+  const CutCellGeometry g(read, grid, file.path());
   EXPECT_NEAR(totalWallArea(g), read.area(), 1e-10 * read.area());
   EXPECT_NEAR(totalFluidVolume(g), read.volume(), 1e-10 * read.volume());
   expectClosedAndConsistent(g);

@@ -2,8 +2,6 @@
 // unreadable, open, inconsistently oriented, inverted, self-intersecting, or leaving no fluid cell.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -18,10 +16,6 @@ using namespace parcelflow::cfd::test;
 
 namespace {
 
-std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("parcelflow_cut_cell_input_" + name)).string();
-}
-
 // Runs `action`, expects a ConfigError whose message contains every one of `parts`.
 template <class Action>
 void expectConfigError(Action action, const std::vector<std::string>& parts) {
@@ -35,10 +29,9 @@ void expectConfigError(Action action, const std::vector<std::string>& parts) {
 }
 
 void expectStlError(const TriangleSurface& surface, const std::string& name, const std::string& problem) {
-  const std::string path = tempPath(name);
-  writeAsciiStl(surface, path);
-  expectConfigError([&] { readStlSurface(path, "geometry.stl"); }, {"geometry.stl", path, problem});
-  std::remove(path.c_str());
+  const TempFile file("input_" + name);
+  writeAsciiStl(surface, file.path());
+  expectConfigError([&] { readStlSurface(file.path(), "geometry.stl"); }, {"geometry.stl", file.path(), problem});
 }
 
 const TriangleSurface cube = boxSurface(Vec3(0.2, 0.2, 0.2), Vec3(0.8, 0.8, 0.8));
@@ -46,15 +39,16 @@ const TriangleSurface cube = boxSurface(Vec3(0.2, 0.2, 0.2), Vec3(0.8, 0.8, 0.8)
 }  // namespace
 
 TEST(CutCellInput, MissingFile) {
-  const std::string path = tempPath("does_not_exist.stl");
-  expectConfigError([&] { readStlSurface(path, "geometry.stl"); }, {"geometry.stl", path, "no such file", "allowed is"});
+  const TempFile missing("input_does_not_exist.stl");  // never written
+  expectConfigError([&] { readStlSurface(missing.path(), "geometry.stl"); },
+                    {"geometry.stl", missing.path(), "no such file", "allowed is"});
 }
 
 TEST(CutCellInput, UnreadableFile) {
-  const std::string path = tempPath("garbage.stl");
-  std::ofstream(path) << "solid broken\nfacet normal 0 0 1\nouter loop\nvertex 0 0 nonsense\n";
-  expectConfigError([&] { readStlSurface(path, "geometry.stl"); }, {"geometry.stl", path, "unreadable"});
-  std::remove(path.c_str());
+  const TempFile garbage("input_garbage.stl");
+  std::ofstream(garbage.path()) << "solid broken\nfacet normal 0 0 1\nouter loop\nvertex 0 0 nonsense\n";
+  expectConfigError([&] { readStlSurface(garbage.path(), "geometry.stl"); },
+                    {"geometry.stl", garbage.path(), "unreadable"});
 }
 
 TEST(CutCellInput, OpenSurface) {

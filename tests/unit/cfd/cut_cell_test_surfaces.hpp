@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -13,6 +14,20 @@
 #include "cfd/triangle_surface.hpp"
 
 namespace parcelflow::cfd::test {
+
+// A file in the temporary directory, removed when the test's scope ends, also when it ends by an exception.
+class TempFile {
+ public:
+  explicit TempFile(const std::string& name)
+      : path_((std::filesystem::temp_directory_path() / ("parcelflow_cut_cell_" + name)).string()) {}
+  ~TempFile() { std::remove(path_.c_str()); }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
 
 inline TriangleSurface boxSurface(const Vec3& lo, const Vec3& hi) {
   TriangleSurface s;
