@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -24,7 +25,9 @@ Mesh mesh(Vec3 lengths, std::array<int, 3> cells) {
 double rough(const Mesh& m, int c) {
   const Vec3& x = m.cellCentre(c);
   const Vec3& h = m.background().spacing();
-  const int parity = (static_cast<int>(x[0] / h[0]) + static_cast<int>(x[1] / h[1]) + static_cast<int>(x[2] / h[2])) % 2;
+  int parity = 0;
+  for (int d = 0; d < 3; ++d) parity += static_cast<int>(x[d] / h[d]);
+  parity %= 2;
   return 0.6 + (parity ? 0.1 : -0.1) + 0.05 * std::sin(97.0 * x[0]) * std::cos(61.0 * x[1] + 13.0 * x[2]);
 }
 }  // namespace
