@@ -36,6 +36,15 @@ def loop_timing(stdout):
     return wall, progress.split("parcel-steps/s")[-1].strip()
 
 
+LIGGGHTS_LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms")
+
+
+def liggghts_loop(output):
+    """The last `run` of a LIGGGHTS log: its loop time [s], DEM steps and atoms (LIGGGHTS' 'Loop time' line)."""
+    seconds, steps, atoms = LIGGGHTS_LOOP.findall(output)[-1]
+    return float(seconds), int(steps), int(atoms)
+
+
 def replace_in_file(path, replacements):
     """Replaces each (old, new) text of `replacements` in file `path`; a missing old text ends the test with
     FAIL (the file changed and the test must follow)."""

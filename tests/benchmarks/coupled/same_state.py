@@ -16,7 +16,6 @@ take hours, such as the full FCC bed) step 1 is skipped: the measured state is t
 """
 import argparse
 import os
-import re
 import shutil
 import sys
 import tempfile
@@ -24,7 +23,8 @@ import tempfile
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, dem_restart_command, establish_checkpoint, loop_timing, run  # noqa: E402
+from parcelflow_runs import (CASES, dem_restart_command, establish_checkpoint, liggghts_loop,  # noqa: E402
+                             loop_timing, run)
 
 
 def main():
@@ -65,10 +65,7 @@ def main():
         command = dem_restart_command(launch, args.parcelflow, "in.pure", settings, checkpoint,
                                       os.path.join(tmp, "log.pure"))
         pure_out = run(command, case)
-        seconds, atoms = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for \d+ steps with (\d+) atoms",
-                                    pure_out)[-1]
-        pure = float(seconds)
-    parcels = int(atoms)
+        pure, _, parcels = liggghts_loop(pure_out)
     print(f"{args.case}: {parcels} parcels, {steps} DEM steps ({args.steps} gas steps) from t = {args.establish} s on "
           f"{args.ranks} rank(s): coupled loop {wall:.2f} s, pure LIGGGHTS {pure:.2f} s, ratio {wall / pure:.3f}; "
           f"coupled {parcels * steps / wall:.3g}, pure {parcels * steps / pure:.3g} parcel-steps/s")

@@ -8,21 +8,19 @@ numbers and the ratio; in-process running should cost nothing (ratio 1.00 within
 """
 import argparse
 import os
-import re
 import statistics
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import run  # noqa: E402
+from parcelflow_runs import liggghts_loop, run  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms")
 
 
 def throughput(output):
-    seconds, _, steps, atoms = LOOP.findall(output)[-1]
-    return int(steps) * int(atoms) / float(seconds)
+    seconds, steps, atoms = liggghts_loop(output)
+    return steps * atoms / seconds
 
 
 def main():

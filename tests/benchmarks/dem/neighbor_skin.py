@@ -21,9 +21,8 @@ import tempfile
 import yaml
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
-from parcelflow_runs import CASES, dem_restart_command, establish_checkpoint, run  # noqa: E402
+from parcelflow_runs import CASES, dem_restart_command, establish_checkpoint, liggghts_loop, run  # noqa: E402
 
-LOOP = re.compile(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) atoms")
 BUILDS = re.compile(r"Neighbor list builds = (\d+)")
 NEIGH_SHARE = re.compile(r"^Neigh time \(%\) = [0-9.eE+-]+ \(([0-9.eE+-]+)\)", re.MULTILINE)
 
@@ -58,9 +57,10 @@ def main():
                 with open(os.path.join(case, "in.skin"), "w") as f:
                     f.write(f"include {settings['liggghts']['script']}\nneighbor {skin!r} bin\n"
                             f"neigh_modify every 1 delay 0 check yes\nrun 0 post no\nrun {args.steps}\n")
-                output = run(dem_restart_command(launch, args.parcelflow, "in.skin", settings, checkpoint, "none"), case)
-                seconds, steps, atoms = LOOP.findall(output)[-1]
-                times[skin].append(float(seconds))
+                command = dem_restart_command(launch, args.parcelflow, "in.skin", settings, checkpoint, "none")
+                output = run(command, case)
+                seconds, _, atoms = liggghts_loop(output)
+                times[skin].append(seconds)
                 builds[skin] = int(BUILDS.findall(output)[-1])
                 share = NEIGH_SHARE.findall(output)
                 if share:
