@@ -13,7 +13,8 @@ scaling, DEM step). The inlet velocity rises linearly from 0 to HOLD_VELOCITY ov
   (`void_shape.py` on three slices across the depth, at 1/4, 1/2 and 3/4).
 A variant that finished before with the same settings is not run again (coarse_graining.py keeps it).
 
-usage: validate.py PARCELFLOW [--runs DIR] [--size smoke|full|periodic] [--ranks N] [--mpirun CMD] [--require-pass]
+usage: validate.py PARCELFLOW [--runs DIR] [--size smoke|full|periodic|deep] [--ranks N] [--jobs N] [--mpirun CMD]
+                   [--require-pass]
 """
 import argparse
 import csv
@@ -51,13 +52,19 @@ QUANTITIES = {
 # correlation gives 0.84 m/s for 1.5 mm and 1.26 m/s for 2.5 mm beads). Smoke: a 20 mm bed of 800 beads for
 # 0.3 s, to check that the driver and the codes run (not the physics). Periodic: a quarter of the full bed's
 # area (37.5 x 37.5 mm, 11,250 beads, 3.125 mm cells) with periodic sides for the parcels and free-slip side
-# walls for the gas, a cut from an unbounded bed: no wall for the parcels' packing to loosen against.
+# walls for the gas, a cut from an unbounded bed: no wall for the parcels' packing to loosen against. Deep: the
+# periodic box with twice the beads (a static bed of about 72 mm: 14 np 8 parcels, 10 np 27 parcels tall), so
+# that the plate's and the surface's layers, a few parcel diameters each, are a smaller share of the bed; the
+# filling falls at 0.3 m/s (coarse_graining.py), so the settling is 0.75 s.
 SIZES = {
     "full": {"width": 0.075, "height": 0.15, "nbeads": 45000, "fill_top": 0.094, "settle_steps": 5000,
              "cells": [23, 23, 46], "end": 7.0, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.3},
     "periodic": {"width": 0.0375, "height": 0.15, "nbeads": 11250, "fill_top": 0.094, "settle_steps": 5000,
                  "cells": [12, 12, 48], "end": 7.0, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.3,
                  "periodic_sides": True},
+    "deep": {"width": 0.0375, "height": 0.3125, "nbeads": 22500, "fill_top": 0.19, "settle_steps": 18000,
+             "cells": [12, 12, 100], "end": 5.5, "ramp_time": 3.0, "window": 4.0, "hold_velocity": 1.3,
+             "periodic_sides": True},
     "smoke": {"width": 0.02, "height": 0.08, "nbeads": 800, "fill_top": 0.030, "settle_steps": 2000,
               "cells": [6, 6, 24], "end": 0.3, "ramp_time": 0.2, "window": 0.2, "hold_velocity": 1.8},
 }
@@ -164,6 +171,7 @@ def main():
     p.add_argument("--size", choices=sorted(SIZES), default="full")
     p.add_argument("--ranks", type=int, default=2)
     p.add_argument("--mpirun", default="mpirun")
+    p.add_argument("--jobs", type=int, default=1, help="variants run at the same time (each on --ranks ranks)")
     p.add_argument("--require-pass", action="store_true", help="exit 1 unless every row passes")
     args = p.parse_args()
     runs = os.path.abspath(args.runs)
@@ -172,7 +180,7 @@ def main():
     bed = make_bed(args.size, runs)
     command = [sys.executable, os.path.join(GOLDSCHMIDT, "coarse_graining.py"), os.path.abspath(args.parcelflow), runs,
                "--case", bed, "--end", str(geometry["end"]), "--start", str(geometry["window"]),
-               "--ranks", str(args.ranks), "--mpirun", args.mpirun, *VARIANTS]
+               "--ranks", str(args.ranks), "--jobs", str(args.jobs), "--mpirun", args.mpirun, *VARIANTS]
     if subprocess.run(command).returncode != 0:
         sys.exit("coarse_graining.py failed (its output is above)")
     measured = {v: measure(os.path.join(runs, v, "run"), geometry) for v in VARIANTS}
