@@ -6,6 +6,7 @@
 #include "config_error.hpp"
 #include "internal_error.hpp"
 #include "partitioner.hpp"
+#include "surface_from_geometry.hpp"
 
 namespace parcelflow::cfd {
 
@@ -29,12 +30,21 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   const auto& bg = mesh.background_;
   const long nBg = bg.size();
 
-  // Fluid selection (cell-centre inside) and global numbering in background order.
+  // Cut cells: every rank computes the whole geometry (same input, same result on every rank).
+  std::optional<CutCellGeometry> cut;
+  if (settings.walls == WallRepresentation::CutCells)
+    cut.emplace(surfaceOfGeometry(geometry, bg), bg, "case.yaml: geometry");
+  const auto isFluid = [&](long b) {
+    const auto ijk = bg.ijk(b);
+    return cut ? cut->fluidFraction(b) > 0.0 : geometry.isFluid(bg.centre(ijk[0], ijk[1], ijk[2]));
+  };
+
+  // Fluid selection (cell-centre inside, or any fluid volume for cut cells) and global numbering in
+  // background order.
   std::vector<int> globalOfBackground(nBg, -1);
   std::vector<long> backgroundOfGlobal;
   for (long b = 0; b < nBg; ++b) {
-    const auto ijk = bg.ijk(b);
-    if (geometry.isFluid(bg.centre(ijk[0], ijk[1], ijk[2]))) {
+    if (isFluid(b)) {
       globalOfBackground[b] = static_cast<int>(backgroundOfGlobal.size());
       backgroundOfGlobal.push_back(b);
     }
@@ -81,10 +91,11 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
     const auto ijk = bg.ijk(b);
     mesh.backgroundIndex_.push_back(b);
     mesh.cellCentre_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
-    mesh.cellVolume_.push_back(bg.cellVolume());
+    // A cut cell keeps the background centre as its centre: part 1 gives no fluid centroid yet.
+    mesh.cellVolume_.push_back(bg.cellVolume() * (cut ? cut->fluidFraction(b) : 1.0));
   }
   buildHalo(mesh, part);
-  buildFaces(mesh, geometry);
+  buildFaces(mesh, geometry, cut);
   return mesh;
 }
 
@@ -157,7 +168,7 @@ void MeshBuilder::buildHalo(Mesh& mesh, const std::vector<int>& part) {
   mesh.halo_ = Halo(mesh.comm_, mesh.nLocalCells(), std::move(neighbours));
 }
 
-void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
+void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::optional<CutCellGeometry>& cut) {
   const auto& bg = mesh.background_;
   const Vec3 h = bg.spacing();
   // Patch list, identical on every rank: box sides, the default wall patch, named cut-outs.
@@ -171,12 +182,17 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
   std::vector<long> localCount(names.size(), 0);
 
   for (int c = 0; c < mesh.nOwned_; ++c) {
-    const auto ijk = bg.ijk(mesh.backgroundIndex_[c]);
+    const long b = mesh.backgroundIndex_[c];
+    const auto ijk = bg.ijk(b);
+    if (cut && cut->isCut(b)) addCutCellWall(mesh, geometry, c, cut->wall(b), localCount);
     for (int d = 0; d < 3; ++d) {
-      const double area = h.prod() / h[d];
       Vec3 e = Vec3::Zero();
       e[d] = 1.0;
       for (int s = -1; s <= 1; s += 2) {
+        // Open area of the face; a closed face of a cut cell is wall already counted in its wall face.
+        const double open = cut ? cut->openFraction(b, static_cast<CellFace>(2 * d + (s > 0 ? 1 : 0))) : 1.0;
+        if (open <= 0.0) continue;
+        const double area = open * h.prod() / h[d];
         auto n = ijk;
         n[d] += s;
         const Vec3 faceCentre = mesh.cellCentre_[c] + 0.5 * s * h[d] * e;
@@ -219,6 +235,31 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
   mesh.patchGlobalFaces_.assign(names.size(), 0);
   MPI_Allreduce(localCount.data(), mesh.patchGlobalFaces_.data(), static_cast<int>(names.size()),
                 MPI_LONG, MPI_SUM, mesh.comm_);
+}
+
+// The wall of a cut cell is one no-slip boundary face: its area vector closes the cell, its delta is the
+// normal distance of the cell centre from the wall plane (the wall stress uses it as the wall distance).
+// The patch is the one of the solid just beyond the wall centroid, as for staircase walls.
+void MeshBuilder::addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,
+                                 std::vector<long>& localCount) {
+  const double magArea = wall.areaVector.norm();
+  if (magArea <= 0.0) return;  // the box only touches the surface
+  const Vec3 normal = wall.areaVector / magArea;
+  const double h = mesh.background_.spacing().minCoeff();
+  // The background centre can lie in the solid (beyond the wall): the distance is then taken on the
+  // fluid side as its absolute value, floored at 1e-3 h so that the wall stress stays finite.
+  const double distance = std::max(std::abs((wall.centroid - mesh.cellCentre_[cell]).dot(normal)), 1e-3 * h);
+  const std::string patch = geometry.wallPatchAt(wall.centroid + 1e-6 * h * normal);
+  const auto& names = mesh.patchNames_;
+  const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
+  PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
+  mesh.boundaryCell_.push_back(cell);
+  mesh.boundaryArea_.push_back(wall.areaVector);
+  mesh.boundaryMagArea_.push_back(magArea);
+  mesh.boundaryCentre_.push_back(wall.centroid);
+  mesh.boundaryDelta_.push_back(distance);
+  mesh.boundaryPatch_.push_back(pid);
+  ++localCount[pid];
 }
 
 }  // namespace parcelflow::cfd

@@ -4,6 +4,9 @@
 // faces, the named boundary patches and the halo pattern.
 #include <mpi.h>
 
+#include <optional>
+
+#include "cut_cell_geometry.hpp"
 #include "gas_settings.hpp"
 #include "mesh.hpp"
 
@@ -17,7 +20,10 @@ class MeshBuilder {
   static void addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBackground,
                              const std::vector<long>& backgroundOfGlobal, int layers);
   static void buildHalo(Mesh& mesh, const std::vector<int>& part);
-  static void buildFaces(Mesh& mesh, const Geometry& geometry);
+  // `cut`: the cut-cell geometry with `walls: cut_cells` (open face areas and wall faces), else none.
+  static void buildFaces(Mesh& mesh, const Geometry& geometry, const std::optional<CutCellGeometry>& cut);
+  static void addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,
+                             std::vector<long>& localCount);
 };
 
 }  // namespace parcelflow::cfd
