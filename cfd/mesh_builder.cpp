@@ -88,10 +88,11 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   addGhostLayers(mesh, globalOfBackground, backgroundOfGlobal, settings.ghostLayers);
   for (int c = 0; c < mesh.nLocalCells(); ++c) {
     const long b = backgroundOfGlobal[mesh.globalId_[c]];
-    const auto ijk = bg.ijk(b);
     mesh.backgroundIndex_.push_back(b);
-    mesh.cellCentre_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
-    // A cut cell keeps the background centre as its centre: part 1 gives no fluid centroid yet.
+    const auto ijk = bg.ijk(b);
+    // A cut cell's centre is its fluid centroid: the boundary terms that use boundary centre - cell
+    // centre (pressure extrapolation, wall distance) then stay within the fluid and the cell.
+    mesh.cellCentre_.push_back(cut ? cut->fluidCentroid(b) : bg.centre(ijk[0], ijk[1], ijk[2]));
     mesh.cellVolume_.push_back(bg.cellVolume() * (cut ? cut->fluidFraction(b) : 1.0));
   }
   buildHalo(mesh, part);
@@ -190,12 +191,13 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::op
       e[d] = 1.0;
       for (int s = -1; s <= 1; s += 2) {
         // Open area of the face; a closed face of a cut cell is wall already counted in its wall face.
-        const double open = cut ? cut->openFraction(b, static_cast<CellFace>(2 * d + (s > 0 ? 1 : 0))) : 1.0;
+        const auto cellFace = static_cast<CellFace>(2 * d + (s > 0 ? 1 : 0));
+        const double open = cut ? cut->openFraction(b, cellFace) : 1.0;
         if (open <= 0.0) continue;
         const double area = open * h.prod() / h[d];
         auto n = ijk;
         n[d] += s;
-        const Vec3 faceCentre = mesh.cellCentre_[c] + 0.5 * s * h[d] * e;
+        const Vec3 faceCentre = cut ? cut->openCentroid(b, cellFace) : Vec3(mesh.cellCentre_[c] + 0.5 * s * h[d] * e);
         std::string patch;
         if (!bg.inside(n[0], n[1], n[2])) {
           patch = kSideNames[d][s > 0 ? 1 : 0];
@@ -215,8 +217,17 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::op
             mesh.faceArea_.push_back(area * e);
             mesh.faceMagArea_.push_back(area);
             mesh.faceCentre_.push_back(faceCentre);
-            mesh.faceWeight_.push_back(0.5);
-            mesh.faceDelta_.push_back(h[d]);
+            if (!cut) {
+              mesh.faceWeight_.push_back(0.5);
+              mesh.faceDelta_.push_back(h[d]);
+              continue;
+            }
+            // Faces are normal to axis d, so the normal gradient and the interpolation use the centroids'
+            // distances along d; the solver corrects for their offset along the face (non-orthogonality).
+            const double xo = mesh.cellCentre_[owner][d], xn = mesh.cellCentre_[neighbour][d];
+            PARCELFLOW_ASSERT(xn > xo, "a fluid centroid is not inside its background cell");
+            mesh.faceWeight_.push_back((xn - faceCentre[d]) / (xn - xo));
+            mesh.faceDelta_.push_back(xn - xo);
             continue;
           }
         }
@@ -226,7 +237,7 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::op
         mesh.boundaryArea_.push_back(s * area * e);
         mesh.boundaryMagArea_.push_back(area);
         mesh.boundaryCentre_.push_back(faceCentre);
-        mesh.boundaryDelta_.push_back(0.5 * h[d]);
+        mesh.boundaryDelta_.push_back(cut ? std::abs(faceCentre[d] - mesh.cellCentre_[c][d]) : 0.5 * h[d]);
         mesh.boundaryPatch_.push_back(pid);
         ++localCount[pid];
       }
@@ -237,8 +248,8 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::op
                 MPI_LONG, MPI_SUM, mesh.comm_);
 }
 
-// The wall of a cut cell is one no-slip boundary face: its area vector closes the cell, its delta is the
-// normal distance of the cell centre from the wall plane (the wall stress uses it as the wall distance).
+// The wall of a cut cell is one boundary face: its area vector closes the cell, its delta is the normal
+// distance of the cell centre from the wall plane (the wall stress uses it as the wall distance).
 // The patch is the one of the solid just beyond the wall centroid, as for staircase walls.
 void MeshBuilder::addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,
                                  std::vector<long>& localCount) {
@@ -246,9 +257,13 @@ void MeshBuilder::addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell,
   if (magArea <= 0.0) return;  // the box only touches the surface
   const Vec3 normal = wall.areaVector / magArea;
   const double h = mesh.background_.spacing().minCoeff();
-  // The background centre can lie in the solid (beyond the wall): the distance is then taken on the
-  // fluid side as its absolute value, floored at 1e-3 h so that the wall stress stays finite.
-  const double distance = std::max(std::abs((wall.centroid - mesh.cellCentre_[cell]).dot(normal)), 1e-3 * h);
+  // The cell centre is the fluid centroid: on the fluid side of a plane wall and of the mean wall plane
+  // of a convex fluid piece. Where wall pieces facing different ways leave the fluid concave (around a
+  // baffle's edge) it can lie on or beyond that plane; the distance to the wall centroid stands in there.
+  const Vec3 toWall = wall.centroid - mesh.cellCentre_[cell];
+  double distance = toWall.dot(normal);
+  if (!(distance > 0.0)) distance = toWall.norm();
+  PARCELFLOW_ASSERT(distance > 0.0, "a cut cell's fluid centroid lies on its wall centroid");
   const std::string patch = geometry.wallPatchAt(wall.centroid + 1e-6 * h * normal);
   const auto& names = mesh.patchNames_;
   const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
