@@ -88,7 +88,10 @@ void GasSolver::assembleMomentum(double dt) {
     const Vec3 n = m.faceArea(f) / m.faceMagArea(f);
     const Vec3 d = m.cellCentre(m.faceNeighbour(f)) - m.cellCentre(m.faceOwner(f));
     const Vec3 nonOrthogonal = n - d / d.dot(n);
-    tInternal[f] = gamma[f] * (J.transpose() * m.faceArea(f) + m.faceMagArea(f) * (J * nonOrthogonal));
+    tInternal[f] = gamma[f] * (J.transpose() * m.faceArea(f));
+    // Added on its own: inside one expression with the product above, Eigen sums that product in
+    // another order and staircase runs changed in the last bits although this term is zero there.
+    tInternal[f] += gamma[f] * m.faceMagArea(f) * (J * nonOrthogonal);
   }
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     const int c = m.boundaryCell(b);
