@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 
 #include "config_error.hpp"
 #include "cut_cell_polyhedron.hpp"
@@ -131,6 +132,7 @@ class CutCellBuilder {
     g_.fluidFraction_[c] = std::clamp(m.volume / volume, 0.0, 1.0);
     g_.wallIndex_[c] = static_cast<int>(g_.walls_.size());
     g_.walls_.push_back(m.wall);
+    g_.centroids_.push_back(m.centroid);
     auto& st = g_.statistics_;
     st.wallArea += m.wall.area;
     const double largestFace = std::max({b_.spacing()[0] * b_.spacing()[1], b_.spacing()[1] * b_.spacing()[2],
@@ -145,9 +147,11 @@ class CutCellBuilder {
       if (seen.empty()) seen.assign(g_.openFraction_[d].size(), -1.0);
       if (seen[face] < 0) {
         seen[face] = fraction;
+        seenCentroid_[d][face] = m.openCentroid[f];
       } else {
         st.maxSharedFaceMismatch = std::max(st.maxSharedFaceMismatch, std::abs(seen[face] - fraction));
         seen[face] = 0.5 * (seen[face] + fraction);  // both cells computed it; they agree to round-off
+        seenCentroid_[d][face] = 0.5 * (seenCentroid_[d][face] + m.openCentroid[f]);
       }
     }
   }
@@ -167,7 +171,10 @@ class CutCellBuilder {
           for (int i = 0; i < n[0] + (d == 0); ++i) {
             const long face = g_.faceIndex(d, i, j, k);
             if (!seenFace_[d].empty() && seenFace_[d][face] >= 0) {
-              g_.openFraction_[d][face] = std::clamp(seenFace_[d][face], 0.0, 1.0);
+              const double fraction = std::clamp(seenFace_[d][face], 0.0, 1.0);
+              g_.openFraction_[d][face] = fraction;
+              if (fraction > 0.0 && fraction < 1.0)
+                g_.cutFaceCentroids_[d].emplace_back(face, seenCentroid_[d].at(face));
               continue;
             }
             // The cell on the face's upper side, or the lower one on the background's upper side.
@@ -185,6 +192,7 @@ class CutCellBuilder {
   CoplanarSurfaceIndex coplanar_;
   std::string source_;
   std::vector<double> seenFace_[3];
+  std::map<long, Vec3> seenCentroid_[3];  // open centroid of the faces in seenFace_
 };
 
 CutCellGeometry::CutCellGeometry(const TriangleSurface& fluidSurface, const CartesianBackground& background,
@@ -203,6 +211,27 @@ long CutCellGeometry::faceIndex(int axis, int i, int j, int k) const {
   std::array<long, 3> planes = {background_.n()[0], background_.n()[1], background_.n()[2]};
   ++planes[axis];
   return i + planes[0] * (j + planes[1] * static_cast<long>(k));
+}
+
+Vec3 CutCellGeometry::fluidCentroid(long cell) const {
+  if (wallIndex_[cell] >= 0) return centroids_[wallIndex_[cell]];
+  const auto ijk = background_.ijk(cell);
+  return background_.centre(ijk[0], ijk[1], ijk[2]);
+}
+
+Vec3 CutCellGeometry::openCentroid(long cell, CellFace face) const {
+  auto ijk = background_.ijk(cell);
+  const int axis = face / 2;
+  ijk[axis] += face % 2;
+  const auto& cutFaces = cutFaceCentroids_[axis];
+  const long index = faceIndex(axis, ijk[0], ijk[1], ijk[2]);
+  const auto it = std::lower_bound(cutFaces.begin(), cutFaces.end(), std::make_pair(index, Vec3(Vec3::Zero())),
+                                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (it != cutFaces.end() && it->first == index) return it->second;
+  // Whole or closed: the centre of the face.
+  Vec3 centre = background_.centre(ijk[0], ijk[1], ijk[2]);
+  centre[axis] = background_.origin()[axis] + ijk[axis] * background_.spacing()[axis];
+  return centre;
 }
 
 double CutCellGeometry::openFraction(long cell, CellFace face) const {

@@ -1,9 +1,10 @@
 #pragma once
-// The cut-cell geometry of a Cartesian background (issue 31, part 1: geometry only, no solver use yet).
+// The cut-cell geometry of a Cartesian background (issue 31; the mesh builder uses it for mesh.walls: cut_cells).
 // From a closed fluid surface (STL file or `geometry:` primitives, see stl_reader.hpp and
 // surface_from_geometry.hpp) it computes for every background cell
-//   - the fluid volume fraction in [0, 1],
-//   - for each of its 6 faces the open (fluid) area fraction, one value per face shared by both cells,
+//   - the fluid volume fraction in [0, 1] and the fluid centroid,
+//   - for each of its 6 faces the open (fluid) area fraction and its centroid, one value per face shared
+//     by both cells,
 //   - for a cut cell its wall: true area, area vector (area-weighted normal, pointing out of the fluid
 //     into the solid) and centroid.
 // Method (cfd/README.md, "Cut-cell geometry"): cells whose closed box does not meet the surface are
@@ -42,7 +43,12 @@ class CutCellGeometry {
 
   // `cell` is the background index (CartesianBackground::index).
   double fluidFraction(long cell) const { return fluidFraction_[cell]; }
+  // Centroid of the cell's fluid volume (the box centre for an uncut cell, and for a cut cell whose
+  // box only touches the surface).
+  Vec3 fluidCentroid(long cell) const;
   double openFraction(long cell, CellFace face) const;
+  // Centroid of the open part of a face (the face centre when it is whole or closed).
+  Vec3 openCentroid(long cell, CellFace face) const;
   bool isCut(long cell) const { return wallIndex_[cell] >= 0; }
   // The wall of a cut cell (a cut cell whose box only touches the surface has a zero wall).
   const CutCellWall& wall(long cell) const;
@@ -63,8 +69,11 @@ class CutCellGeometry {
   CartesianBackground background_;
   std::vector<double> fluidFraction_;
   std::vector<double> openFraction_[3];  // per axis, (n_axis + 1) planes of faces
-  std::vector<int> wallIndex_;           // per cell, into walls_, -1 for uncut cells
+  std::vector<int> wallIndex_;           // per cell, into walls_ and centroids_, -1 for uncut cells
   std::vector<CutCellWall> walls_;
+  std::vector<Vec3> centroids_;          // fluid centroid per cut cell
+  std::vector<std::pair<long, Vec3>> cutFaceCentroids_[3];  // per axis: (face, open centroid) of the
+                                                            // partly open faces, sorted by face
   Statistics statistics_;
 
   friend class CutCellBuilder;

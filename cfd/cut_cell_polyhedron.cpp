@@ -54,13 +54,19 @@ CutCellMeasure measureCutCell(const cgal::Mesh& clipped, const Vec3& lo, const V
   CutCellMeasure m;
   Vec3 closure = Vec3::Zero();
   double sixTimesVolume = 0;
+  Vec3 twentyFourTimesMoment = Vec3::Zero();  // first moment of the volume about lo, times 24
   Vec3 wallMoment = Vec3::Zero();
+  std::array<Vec3, 6> openMoment;
+  openMoment.fill(Vec3::Zero());
   for (auto f : clipped.faces()) {
     std::array<Vec3, 3> p;
     int n = 0;
     for (auto v : CGAL::vertices_around_face(clipped.halfedge(f), clipped)) p[n++] = cgal::toVec3(clipped.point(v));
     // Volume relative to the cell's lower corner: small terms, no cancellation of large coordinates.
-    sixTimesVolume += (p[0] - lo).dot((p[1] - lo).cross(p[2] - lo));
+    // Each face spans a tetrahedron with lo: volume det/6, centroid lo + (sum of the corners - lo)/4.
+    const double det = (p[0] - lo).dot((p[1] - lo).cross(p[2] - lo));
+    sixTimesVolume += det;
+    twentyFourTimesMoment += det * ((p[0] - lo) + (p[1] - lo) + (p[2] - lo));
     const Vec3 areaVector = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]);
     const double area = areaVector.norm();
     const Vec3 centroid = (p[0] + p[1] + p[2]) / 3.0;
@@ -88,10 +94,15 @@ CutCellMeasure measureCutCell(const cgal::Mesh& clipped, const Vec3& lo, const V
       wallMoment += area * centroid;
     } else {
       m.openArea[boxFace] += area;
+      openMoment[boxFace] += area * centroid;
     }
   }
   m.volume = sixTimesVolume / 6.0;
+  // A cell whose box only touches the surface has no volume: its centroid is the box centre.
+  m.centroid = sixTimesVolume > 0 ? Vec3(lo + twentyFourTimesMoment / (4.0 * sixTimesVolume)) : Vec3(0.5 * (lo + hi));
   if (m.wall.area > 0) m.wall.centroid = wallMoment / m.wall.area;
+  for (int f = 0; f < 6; ++f)
+    if (m.openArea[f] > 0) m.openCentroid[f] = openMoment[f] / m.openArea[f];
   // Closure from the classified parts: open faces have the box's outward axis normals.
   Vec3 classified = m.wall.areaVector;
   for (int f = 0; f < 6; ++f) classified[f / 2] += (f % 2 ? 1.0 : -1.0) * m.openArea[f];

@@ -1,6 +1,7 @@
 #pragma once
 // Measures one cut cell: the closed polyhedron `fluid ∩ cell box` (from CGAL's clip) split into its
-// volume, the open area on each of the box's 6 faces and the wall (every other face). Internal to
+// volume and centroid, the open area (and its centroid) on each of the box's 6 faces and the wall (every
+// other face). Internal to
 // cut_cell_geometry.cpp (CGAL types).
 #include <array>
 #include <map>
@@ -25,7 +26,9 @@ class CoplanarSurfaceIndex {
 
 struct CutCellMeasure {
   double volume = 0;
+  Vec3 centroid = Vec3::Zero();  // of the fluid volume (first moment / volume)
   std::array<double, 6> openArea{};  // per CellFace
+  std::array<Vec3, 6> openCentroid{};  // per CellFace, area-weighted; zero for a closed face
   CutCellWall wall;
   double closureError = 0;  // |sum of outward area vectors|, should be round-off
 };

@@ -42,7 +42,7 @@ GasConfig::GasConfig(const YAML::Node& root) {
 }
 
 MeshSettings GasConfig::readMesh(const YamlSection& s) {
-  s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights"});
+  s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights", "walls"});
   MeshSettings m;
   // Up to 10 km, far beyond any apparatus: at 1e300 m the first pressure solve did no iteration and the
   // run went on until the blow-up guard stopped it (the coordinates lose all precision).
@@ -56,6 +56,8 @@ MeshSettings GasConfig::readMesh(const YamlSection& s) {
     s.fail("cells", "has " + std::to_string(static_cast<long long>(total)) + " background cells; allowed are at "
                     "most 1e8 in total (each rank holds about 24 bytes per background cell: 2.4 GB at 1e8)");
   m.ghostLayers = s.integer("ghost_layers", 2, 1, 5);
+  m.walls = s.word("walls", "staircase", {"staircase", "cut_cells"}) == "cut_cells" ? WallRepresentation::CutCells
+                                                                                   : WallRepresentation::Staircase;
   if (s.has("partition_weights")) {
     for (const auto& item : s.listOfMaps("partition_weights")) {
       item.allowOnly({"region", "weight"});

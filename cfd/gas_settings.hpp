@@ -15,12 +15,18 @@ struct PartitionWeight {
   int weight = 1;  // METIS vertex weight of cells whose centre is inside `region`
 };
 
+// How the gas sees the walls of `geometry:`: whole background cells selected by their centre, or cut
+// cells (fluid volume, open face areas and a wall face per cut cell; cfd/README.md, "Cut cells in the
+// solver").
+enum class WallRepresentation { Staircase, CutCells };
+
 struct MeshSettings {
   Vec3 origin = Vec3::Zero();
   Vec3 lengths = Vec3::Ones();
   std::array<int, 3> cells{1, 1, 1};
   int ghostLayers = 2;
   std::vector<PartitionWeight> partitionWeights;  // later entries override earlier ones
+  WallRepresentation walls = WallRepresentation::Staircase;
 };
 
 struct GasProperties {

@@ -2,6 +2,7 @@
 
 #include <HYPRE.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "hypre_library.hpp"
@@ -36,8 +37,15 @@ HypreMatrix::HypreMatrix(const LduMatrix& matrix, const ScalarField& extraDiag)
     cols[c].push_back(firstRow_ + c);
     values[c].push_back(matrix.diag()[c] + (extraDiag.empty() ? 0.0 : extraDiag[c]));
   }
+  // A merged cut cell (cell_groups.hpp) can share two faces with one neighbour: one entry per column.
   const auto couple = [&](int row, int col, double value) {
-    cols[row].push_back(static_cast<HYPRE_BigInt>(rows[col]));
+    const auto id = static_cast<HYPRE_BigInt>(rows[col]);
+    const auto it = std::find(cols[row].begin() + 1, cols[row].end(), id);
+    if (it != cols[row].end()) {
+      values[row][it - cols[row].begin()] += value;
+      return;
+    }
+    cols[row].push_back(id);
     values[row].push_back(value);
     ++(col < nOwned_ ? nDiagBlock : nOffdBlock)[row];
   };

@@ -31,7 +31,8 @@ class Mesh {
 
   const CartesianBackground& background() const { return background_; }
   // Local index of the fluid cell (owned or ghost) at background index (i, j, k); -1 if it is solid,
-  // outside the background or not present on this rank.
+  // outside the background or not present on this rank. A small cut cell merged into a neighbour
+  // (cell_groups.hpp) gives the merged cell.
   int localCellOfBackground(int i, int j, int k) const {
     return background_.inside(i, j, k) ? backgroundToLocal_[background_.index(i, j, k)] : -1;
   }
@@ -39,8 +40,14 @@ class Mesh {
   int nOwnedCells() const { return nOwned_; }
   int nLocalCells() const { return static_cast<int>(globalId_.size()); }
   long nGlobalCells() const { return nGlobal_; }
-  // Global fluid-cell id (ordered like the background's linear index), the same on every rank count.
+  // Small cut cells merged into a neighbour, and those left alone (no open face to a cell that is not
+  // small), over the whole mesh.
+  long mergedCells() const { return mergedCells_; }
+  long unmergedSmallCells() const { return unmergedSmallCells_; }
+  // Global fluid-cell id (ordered like the background's linear index of the cell or its master), the
+  // same on every rank count.
   long globalId(int cell) const { return globalId_[cell]; }
+  // The background cell of a cell (of a merged cell: its master's).
   long backgroundIndex(int cell) const { return backgroundIndex_[cell]; }
   const Vec3& cellCentre(int cell) const { return cellCentre_[cell]; }
   double cellVolume(int cell) const { return cellVolume_[cell]; }
@@ -86,7 +93,7 @@ class Mesh {
   CartesianBackground background_;
   std::vector<int> backgroundToLocal_;
   int nOwned_ = 0;
-  long nGlobal_ = 0;
+  long nGlobal_ = 0, mergedCells_ = 0, unmergedSmallCells_ = 0;
   std::vector<long> globalId_, backgroundIndex_;
   std::vector<Vec3> cellCentre_;
   std::vector<double> cellVolume_;

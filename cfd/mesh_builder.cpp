@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <map>
 
+#include "cell_groups.hpp"
 #include "config_error.hpp"
 #include "internal_error.hpp"
 #include "partitioner.hpp"
+#include "surface_from_geometry.hpp"
 
 namespace parcelflow::cfd {
 
@@ -29,34 +31,45 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   const auto& bg = mesh.background_;
   const long nBg = bg.size();
 
-  // Fluid selection (cell-centre inside) and global numbering in background order.
-  std::vector<int> globalOfBackground(nBg, -1);
-  std::vector<long> backgroundOfGlobal;
+  // Cut cells: every rank computes the whole geometry (same input, same result on every rank).
+  std::optional<CutCellGeometry> cut;
+  if (settings.walls == WallRepresentation::CutCells)
+    cut.emplace(surfaceOfGeometry(geometry, bg), bg, "case.yaml: geometry");
+  // Fluid selection (cell-centre inside, or any fluid volume for cut cells), small cut cells merged
+  // into a neighbour, global numbering of the cells in their masters' background order.
+  std::vector<bool> fluid(nBg);
   for (long b = 0; b < nBg; ++b) {
     const auto ijk = bg.ijk(b);
-    if (geometry.isFluid(bg.centre(ijk[0], ijk[1], ijk[2]))) {
-      globalOfBackground[b] = static_cast<int>(backgroundOfGlobal.size());
-      backgroundOfGlobal.push_back(b);
-    }
+    fluid[b] = cut ? cut->fluidFraction(b) > 0.0 : geometry.isFluid(bg.centre(ijk[0], ijk[1], ijk[2]));
   }
-  const int nGlobal = static_cast<int>(backgroundOfGlobal.size());
+  const CellGroups groups = groupCells(bg, fluid, cut ? &*cut : nullptr);
+  const auto& globalOfBackground = groups.globalOfBackground;
+  const int nGlobal = static_cast<int>(groups.backgroundOfGlobal.size());
   if (nGlobal == 0) throw ConfigError("case.yaml: geometry: selects no fluid cell of the mesh");
   mesh.nGlobal_ = nGlobal;
+  mesh.mergedCells_ = groups.mergedCells;
+  mesh.unmergedSmallCells_ = groups.unmergedSmallCells;
 
-  // Face graph and weights for METIS.
+  // Face graph and weights for METIS: a merged cell's neighbours are its members' (each once).
   std::vector<int> xadj{0}, adjncy, weights(nGlobal, 1);
   for (int g = 0; g < nGlobal; ++g) {
-    const auto ijk = bg.ijk(backgroundOfGlobal[g]);
-    for (int d = 0; d < 3; ++d)
-      for (int s = -1; s <= 1; s += 2) {
-        auto n = ijk;
-        n[d] += s;
-        if (bg.inside(n[0], n[1], n[2])) {
+    std::vector<int> neighbours;
+    for (long member : groups.members[g]) {
+      const auto ijk = bg.ijk(member);
+      for (int d = 0; d < 3; ++d)
+        for (int s = -1; s <= 1; s += 2) {
+          auto n = ijk;
+          n[d] += s;
+          if (!bg.inside(n[0], n[1], n[2])) continue;
           const int ng = globalOfBackground[bg.index(n[0], n[1], n[2])];
-          if (ng >= 0) adjncy.push_back(ng);
+          // In the order found, so that meshes without merged cells get the same partition as before.
+          if (ng >= 0 && ng != g && std::find(neighbours.begin(), neighbours.end(), ng) == neighbours.end())
+            neighbours.push_back(ng);
         }
-      }
+    }
+    adjncy.insert(adjncy.end(), neighbours.begin(), neighbours.end());
     xadj.push_back(static_cast<int>(adjncy.size()));
+    const auto ijk = bg.ijk(groups.backgroundOfGlobal[g]);
     const Vec3 x = bg.centre(ijk[0], ijk[1], ijk[2]);
     for (const auto& w : settings.partitionWeights)
       if (w.region.contains(x)) weights[g] = w.weight;
@@ -72,48 +85,64 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   MPI_Allreduce(&haveCells, &allHave, 1, MPI_DOUBLE, MPI_MIN, comm);
   if (allHave < 1.0) throw ConfigError("the partition left an MPI rank without cells: use fewer ranks");
 
+  addGhostLayers(mesh, groups, settings.ghostLayers);
   mesh.backgroundToLocal_.assign(nBg, -1);
-  for (int c = 0; c < mesh.nOwned_; ++c)
-    mesh.backgroundToLocal_[backgroundOfGlobal[mesh.globalId_[c]]] = c;
-  addGhostLayers(mesh, globalOfBackground, backgroundOfGlobal, settings.ghostLayers);
   for (int c = 0; c < mesh.nLocalCells(); ++c) {
-    const long b = backgroundOfGlobal[mesh.globalId_[c]];
-    const auto ijk = bg.ijk(b);
+    const auto& members = groups.members[mesh.globalId_[c]];
+    for (long member : members) mesh.backgroundToLocal_[member] = c;
+    const long b = members.front();
     mesh.backgroundIndex_.push_back(b);
-    mesh.cellCentre_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
-    mesh.cellVolume_.push_back(bg.cellVolume());
+    const auto ijk = bg.ijk(b);
+    // A cut cell's centre is its fluid centroid (of all its members when merged): the boundary terms
+    // that use boundary centre - cell centre (pressure extrapolation, wall distance) then stay within
+    // the fluid and the cell.
+    if (!cut) {
+      mesh.cellCentre_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
+      mesh.cellVolume_.push_back(bg.cellVolume());
+    } else if (members.size() == 1) {
+      mesh.cellCentre_.push_back(cut->fluidCentroid(b));
+      mesh.cellVolume_.push_back(bg.cellVolume() * cut->fluidFraction(b));
+    } else {
+      double volume = 0.0;
+      Vec3 moment = Vec3::Zero();
+      for (long member : members) {
+        const double v = bg.cellVolume() * cut->fluidFraction(member);
+        volume += v;
+        moment += v * cut->fluidCentroid(member);
+      }
+      mesh.cellCentre_.push_back(moment / volume);
+      mesh.cellVolume_.push_back(volume);
+    }
   }
   buildHalo(mesh, part);
-  buildFaces(mesh, geometry);
+  buildFaces(mesh, geometry, cut, groups);
   return mesh;
 }
 
-void MeshBuilder::addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBackground,
-                                 const std::vector<long>& backgroundOfGlobal, int layers) {
+void MeshBuilder::addGhostLayers(Mesh& mesh, const CellGroups& groups, int layers) {
   const auto& bg = mesh.background_;
+  std::vector<char> present(groups.backgroundOfGlobal.size(), 0);
+  for (long g : mesh.globalId_) present[g] = 1;
   int begin = 0;
   for (int layer = 1; layer <= layers; ++layer) {
     const int end = mesh.nLocalCells();
     std::vector<int> added;  // global ids of the new layer
-    for (int c = begin; c < end; ++c) {
-      const auto ijk = bg.ijk(backgroundOfGlobal[mesh.globalId_[c]]);
-      for (int dk = -1; dk <= 1; ++dk)
-        for (int dj = -1; dj <= 1; ++dj)
-          for (int di = -1; di <= 1; ++di) {
-            const int i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
-            if (!bg.inside(i, j, k)) continue;
-            const long b = bg.index(i, j, k);
-            const int g = globalOfBackground[b];
-            if (g < 0 || mesh.backgroundToLocal_[b] != -1) continue;  // solid, present or taken
-            mesh.backgroundToLocal_[b] = -2;  // mark as taken for this layer
-            added.push_back(g);
-          }
-    }
+    for (int c = begin; c < end; ++c)
+      for (long member : groups.members[mesh.globalId_[c]]) {
+        const auto ijk = bg.ijk(member);
+        for (int dk = -1; dk <= 1; ++dk)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di) {
+              const int i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
+              if (!bg.inside(i, j, k)) continue;
+              const int g = groups.globalOfBackground[bg.index(i, j, k)];
+              if (g < 0 || present[g]) continue;  // solid, or present already
+              present[g] = 1;
+              added.push_back(g);
+            }
+      }
     std::sort(added.begin(), added.end());
-    for (int g : added) {
-      mesh.backgroundToLocal_[backgroundOfGlobal[g]] = mesh.nLocalCells();
-      mesh.globalId_.push_back(g);
-    }
+    mesh.globalId_.insert(mesh.globalId_.end(), added.begin(), added.end());
     begin = end;
   }
 }
@@ -157,7 +186,8 @@ void MeshBuilder::buildHalo(Mesh& mesh, const std::vector<int>& part) {
   mesh.halo_ = Halo(mesh.comm_, mesh.nLocalCells(), std::move(neighbours));
 }
 
-void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
+void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::optional<CutCellGeometry>& cut,
+                             const CellGroups& groups) {
   const auto& bg = mesh.background_;
   const Vec3 h = bg.spacing();
   // Patch list, identical on every rank: box sides, the default wall patch, named cut-outs.
@@ -170,55 +200,109 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry) {
       names.push_back(item.patch);
   std::vector<long> localCount(names.size(), 0);
 
-  for (int c = 0; c < mesh.nOwned_; ++c) {
-    const auto ijk = bg.ijk(mesh.backgroundIndex_[c]);
-    for (int d = 0; d < 3; ++d) {
-      const double area = h.prod() / h[d];
-      Vec3 e = Vec3::Zero();
-      e[d] = 1.0;
-      for (int s = -1; s <= 1; s += 2) {
-        auto n = ijk;
-        n[d] += s;
-        const Vec3 faceCentre = mesh.cellCentre_[c] + 0.5 * s * h[d] * e;
-        std::string patch;
-        if (!bg.inside(n[0], n[1], n[2])) {
-          patch = kSideNames[d][s > 0 ? 1 : 0];
-        } else {
-          const int nb = mesh.localCellOfBackground(n[0], n[1], n[2]);
-          const bool solid = nb < 0;
-          if (solid) {
-            patch = geometry.wallPatchAt(bg.centre(n[0], n[1], n[2]));
+  for (int c = 0; c < mesh.nOwned_; ++c)
+    for (long b : groups.members[mesh.globalId_[c]]) {
+      const auto ijk = bg.ijk(b);
+      if (cut && cut->isCut(b)) addCutCellWall(mesh, geometry, c, cut->wall(b), localCount);
+      for (int d = 0; d < 3; ++d) {
+        Vec3 e = Vec3::Zero();
+        e[d] = 1.0;
+        for (int s = -1; s <= 1; s += 2) {
+          // Open area of the face; a closed face of a cut cell is wall already counted in its wall face.
+          const auto cellFace = static_cast<CellFace>(2 * d + (s > 0 ? 1 : 0));
+          const double open = cut ? cut->openFraction(b, cellFace) : 1.0;
+          if (open <= 0.0) continue;
+          const double area = open * h.prod() / h[d];
+          auto n = ijk;
+          n[d] += s;
+          const Vec3 faceCentre =
+              cut ? cut->openCentroid(b, cellFace) : Vec3(mesh.cellCentre_[c] + 0.5 * s * h[d] * e);
+          std::string patch;
+          if (!bg.inside(n[0], n[1], n[2])) {
+            patch = kSideNames[d][s > 0 ? 1 : 0];
           } else {
-            // Owner is the lower global id, i.e. the -d side. Owned pairs are added once, from the
-            // owner; faces to ghosts are added from the owned side.
-            const bool ghost = nb >= mesh.nOwned_;
-            if (s < 0 && !ghost) continue;
-            const int owner = s > 0 ? c : nb, neighbour = s > 0 ? nb : c;
-            mesh.faceOwner_.push_back(owner);
-            mesh.faceNeighbour_.push_back(neighbour);
-            mesh.faceArea_.push_back(area * e);
-            mesh.faceMagArea_.push_back(area);
-            mesh.faceCentre_.push_back(faceCentre);
-            mesh.faceWeight_.push_back(0.5);
-            mesh.faceDelta_.push_back(h[d]);
-            continue;
+            const int nb = mesh.localCellOfBackground(n[0], n[1], n[2]);
+            if (nb == c) continue;  // between two members of a merged cell
+            if (nb < 0) {
+              patch = geometry.wallPatchAt(bg.centre(n[0], n[1], n[2]));
+            } else {
+              // Owned pairs are added once, from the -d side; faces to ghosts from the owned side.
+              if (s < 0 && nb < mesh.nOwned_) continue;
+              addInternalFace(mesh, s > 0 ? c : nb, s > 0 ? nb : c, d, area, faceCentre, cut.has_value());
+              continue;
+            }
           }
+          const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
+          PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
+          mesh.boundaryCell_.push_back(c);
+          mesh.boundaryArea_.push_back(s * area * e);
+          mesh.boundaryMagArea_.push_back(area);
+          mesh.boundaryCentre_.push_back(faceCentre);
+          mesh.boundaryDelta_.push_back(cut ? std::abs(faceCentre[d] - mesh.cellCentre_[c][d]) : 0.5 * h[d]);
+          mesh.boundaryPatch_.push_back(pid);
+          ++localCount[pid];
         }
-        const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
-        PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
-        mesh.boundaryCell_.push_back(c);
-        mesh.boundaryArea_.push_back(s * area * e);
-        mesh.boundaryMagArea_.push_back(area);
-        mesh.boundaryCentre_.push_back(faceCentre);
-        mesh.boundaryDelta_.push_back(0.5 * h[d]);
-        mesh.boundaryPatch_.push_back(pid);
-        ++localCount[pid];
       }
     }
-  }
   mesh.patchGlobalFaces_.assign(names.size(), 0);
   MPI_Allreduce(localCount.data(), mesh.patchGlobalFaces_.data(), static_cast<int>(names.size()),
                 MPI_LONG, MPI_SUM, mesh.comm_);
+}
+
+// A face normal to axis d between the cells `low` (on its -d side) and `high`. The owner is the cell of
+// the lower global id (both ranks sharing a face orient it alike); the area vector points from it to
+// the neighbour. Without merged cells that is always `low`.
+void MeshBuilder::addInternalFace(Mesh& mesh, int low, int high, int d, double area, const Vec3& faceCentre,
+                                  bool cutCells) {
+  const bool lowOwns = mesh.globalId_[low] < mesh.globalId_[high];
+  Vec3 areaVector = Vec3::Zero();
+  areaVector[d] = lowOwns ? area : -area;
+  mesh.faceOwner_.push_back(lowOwns ? low : high);
+  mesh.faceNeighbour_.push_back(lowOwns ? high : low);
+  mesh.faceArea_.push_back(areaVector);
+  mesh.faceMagArea_.push_back(area);
+  mesh.faceCentre_.push_back(faceCentre);
+  if (!cutCells) {
+    mesh.faceWeight_.push_back(0.5);
+    mesh.faceDelta_.push_back(mesh.background_.spacing()[d]);
+    return;
+  }
+  // The normal gradient and the interpolation use the centroids' distances along d; the solver
+  // corrects for their offset along the face (non-orthogonality).
+  const double xl = mesh.cellCentre_[low][d], xh = mesh.cellCentre_[high][d];
+  PARCELFLOW_ASSERT(xh > xl, "a fluid centroid is not on its side of a face");
+  const double lowWeight = (xh - faceCentre[d]) / (xh - xl);
+  mesh.faceWeight_.push_back(lowOwns ? lowWeight : 1.0 - lowWeight);
+  mesh.faceDelta_.push_back(xh - xl);
+}
+
+// The wall of a cut cell is one boundary face: its area vector closes the cell, its delta is the normal
+// distance of the cell centre from the wall plane (the wall stress uses it as the wall distance).
+// The patch is the one of the solid just beyond the wall centroid, as for staircase walls.
+void MeshBuilder::addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,
+                                 std::vector<long>& localCount) {
+  const double magArea = wall.areaVector.norm();
+  if (magArea <= 0.0) return;  // the box only touches the surface
+  const Vec3 normal = wall.areaVector / magArea;
+  const double h = mesh.background_.spacing().minCoeff();
+  // The cell centre is the fluid centroid: on the fluid side of a plane wall and of the mean wall plane
+  // of a convex fluid piece. Where wall pieces facing different ways leave the fluid concave (around a
+  // baffle's edge) it can lie on or beyond that plane; the distance to the wall centroid stands in there.
+  const Vec3 toWall = wall.centroid - mesh.cellCentre_[cell];
+  double distance = toWall.dot(normal);
+  if (!(distance > 0.0)) distance = toWall.norm();
+  PARCELFLOW_ASSERT(distance > 0.0, "a cut cell's fluid centroid lies on its wall centroid");
+  const std::string patch = geometry.wallPatchAt(wall.centroid + 1e-6 * h * normal);
+  const auto& names = mesh.patchNames_;
+  const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
+  PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
+  mesh.boundaryCell_.push_back(cell);
+  mesh.boundaryArea_.push_back(wall.areaVector);
+  mesh.boundaryMagArea_.push_back(magArea);
+  mesh.boundaryCentre_.push_back(wall.centroid);
+  mesh.boundaryDelta_.push_back(distance);
+  mesh.boundaryPatch_.push_back(pid);
+  ++localCount[pid];
 }
 
 }  // namespace parcelflow::cfd

@@ -1,9 +1,14 @@
 #pragma once
 // Builds the local Mesh of every rank (collective over `comm`): selects the fluid cells of the
-// Cartesian background with the geometry, partitions them with METIS, adds the ghost layers, the
-// faces, the named boundary patches and the halo pattern.
+// Cartesian background with the geometry (with cut cells: merging small ones into a neighbour,
+// cell_groups.hpp), partitions them with METIS, adds the ghost layers, the faces, the named boundary
+// patches and the halo pattern.
 #include <mpi.h>
 
+#include <optional>
+
+#include "cell_groups.hpp"
+#include "cut_cell_geometry.hpp"
 #include "gas_settings.hpp"
 #include "mesh.hpp"
 
@@ -14,10 +19,15 @@ class MeshBuilder {
   static Mesh build(const MeshSettings& settings, const Geometry& geometry, MPI_Comm comm);
 
  private:
-  static void addGhostLayers(Mesh& mesh, const std::vector<int>& globalOfBackground,
-                             const std::vector<long>& backgroundOfGlobal, int layers);
+  static void addGhostLayers(Mesh& mesh, const CellGroups& groups, int layers);
   static void buildHalo(Mesh& mesh, const std::vector<int>& part);
-  static void buildFaces(Mesh& mesh, const Geometry& geometry);
+  // `cut`: the cut-cell geometry with `walls: cut_cells` (open face areas and wall faces), else none.
+  static void buildFaces(Mesh& mesh, const Geometry& geometry, const std::optional<CutCellGeometry>& cut,
+                         const CellGroups& groups);
+  static void addInternalFace(Mesh& mesh, int low, int high, int d, double area, const Vec3& faceCentre,
+                              bool cutCells);
+  static void addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,
+                             std::vector<long>& localCount);
 };
 
 }  // namespace parcelflow::cfd

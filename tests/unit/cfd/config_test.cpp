@@ -91,6 +91,7 @@ TEST(GasConfig, ValidFileParses) {
   const auto& s = config.settings();
   EXPECT_EQ(s.mesh.cells[2], 20);
   EXPECT_EQ(s.mesh.ghostLayers, 3);
+  EXPECT_EQ(s.mesh.walls, WallRepresentation::Staircase);  // the default
   EXPECT_EQ(s.mesh.partitionWeights.size(), 1u);
   EXPECT_EQ(s.geometry.items().size(), 3u);
   EXPECT_DOUBLE_EQ(s.gas.viscosity, 1.8e-5);
@@ -169,6 +170,8 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
               {"gas.viscosity = -1", "must be a number in (0, 1000]"});
   expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layers: 0")),
               {"mesh.ghost_layers = 0", "[1, 5]"});
+  expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layers: 3\n  walls: cut")),
+              {"mesh.walls = cut", "staircase, cut_cells"});
   expectError(errorOf(replaced("  convection: upwind", "  convection: quick")),
               {"solver.convection = quick", "upwind, limited_linear_upwind"});
   expectError(errorOf(replaced("type: velocity_inlet,", "type: inlet,")),

@@ -1,7 +1,8 @@
 // Cut-cell geometry (issue 31, part 1): fluid volumes, open face fractions and walls of the Cartesian
 // cells cut by STL surfaces (aligned and rotated boxes, a sphere) and by the `geometry:` primitives
-// (tessellated cylinders, cones, booleans), against exact values; each cut cell closes; bad STL input
-// stops with a ConfigError naming the file and the problem.
+// (tessellated cylinders, cones, booleans), against exact values (fluid centroids also through their
+// first moments against the solid's centroid); each cut cell closes; bad STL input stops with a
+// ConfigError naming the file and the problem.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -47,6 +48,23 @@ double largestClosureError(const CutCellGeometry& g) {
   return worst;
 }
 
+// The centroid of all fluid from the cells' volumes and fluid centroids (first moments); every
+// centroid must lie in its cell's box.
+Vec3 fluidCentroidOfAll(const CutCellGeometry& g) {
+  const auto& b = g.background();
+  Vec3 moment = Vec3::Zero();
+  double volume = 0;
+  for (long c = 0; c < b.size(); ++c) {
+    const double v = g.fluidFraction(c) * b.cellVolume();
+    const auto ijk = b.ijk(c);
+    const Vec3 offset = g.fluidCentroid(c) - b.centre(ijk[0], ijk[1], ijk[2]);
+    EXPECT_TRUE((offset.cwiseAbs() - 0.5 * b.spacing()).maxCoeff() <= 1e-15) << "cell " << c;
+    moment += v * g.fluidCentroid(c);
+    volume += v;
+  }
+  return moment / volume;
+}
+
 double totalWallArea(const CutCellGeometry& g) {
   double a = 0;
   for (long c = 0; c < g.background().size(); ++c)
@@ -79,11 +97,16 @@ void checkAlignedBox(const CutCellGeometry& g) {
   EXPECT_DOUBLE_EQ(g.wall(half).area, 0.0625);
   EXPECT_LT((g.wall(half).normal() - Vec3(1, 0, 0)).norm(), 1e-15);
   EXPECT_LT((g.wall(half).centroid - Vec3(0.625, 0.375, 0.375)).norm(), 1e-15);
+  EXPECT_LT((g.fluidCentroid(half) - Vec3(0.5625, 0.375, 0.375)).norm(), 1e-15);
+  EXPECT_LT((g.openCentroid(half, YMin) - Vec3(0.5625, 0.25, 0.375)).norm(), 1e-15);
+  EXPECT_LT((g.openCentroid(half, XMin) - Vec3(0.5, 0.375, 0.375)).norm(), 1e-15);  // whole face
   const long corner = b.index(2, 0, 1);  // halved in x and in y
   EXPECT_DOUBLE_EQ(g.fluidFraction(corner), 0.25);
   EXPECT_DOUBLE_EQ(g.openFraction(corner, ZMin), 0.25);
   EXPECT_DOUBLE_EQ(g.openFraction(corner, XMin), 0.5);
   EXPECT_DOUBLE_EQ(g.openFraction(corner, YMax), 0.5);
+  EXPECT_LT((g.fluidCentroid(corner) - Vec3(0.5625, 0.1875, 0.375)).norm(), 1e-15);
+  EXPECT_LT((fluidCentroidOfAll(g) - Vec3(0.4375, 0.4375, 0.5)).norm(), 1e-12);
   // The wall on the grid plane x = 0.25: a wall of the fluid cell, closed for the solid one beyond.
   const long behindWall = b.index(1, 1, 1), solid = b.index(0, 1, 1);
   EXPECT_EQ(g.fluidFraction(behindWall), 1.0);
@@ -128,6 +151,7 @@ TEST(CutCellGeometry, RotatedBoxStl) {
   const CutCellGeometry g(read, grid, file.path());
   EXPECT_NEAR(totalFluidVolume(g), 0.3 * 0.4 * 0.5, 1e-12 * 0.06);
   EXPECT_NEAR(totalWallArea(g), 2 * (0.3 * 0.4 + 0.4 * 0.5 + 0.3 * 0.5), 1e-12);
+  EXPECT_LT((fluidCentroidOfAll(g) - Vec3(0.5, 0.5, 0.5)).norm(), 1e-12);  // the rotation's centre
   expectClosedAndConsistent(g);
 }
 
@@ -141,6 +165,8 @@ TEST(CutCellGeometry, SphereWallAreaIsTheSurfaceArea) {
   const CutCellGeometry g(read, grid, file.path());
   EXPECT_NEAR(totalWallArea(g), read.area(), 1e-10 * read.area());
   EXPECT_NEAR(totalFluidVolume(g), read.volume(), 1e-10 * read.volume());
+  // The icosphere is symmetric about its centre, so its centroid is the centre.
+  EXPECT_LT((fluidCentroidOfAll(g) - Vec3(0.51, 0.49, 0.503)).norm(), 1e-12);
   expectClosedAndConsistent(g);
   std::printf("sphere: %ld cut cells of %ld, %.3f s\n", g.statistics().cutCells, grid.size(), g.statistics().seconds);
 }

@@ -1,0 +1,63 @@
+#include "cell_groups.hpp"
+
+namespace parcelflow::cfd {
+
+namespace {
+
+// The master a small cut cell joins: the neighbour across its largest open face that is not small
+// (the lowest background index on a tie), -1 when there is none.
+long masterOf(const CartesianBackground& bg, const CutCellGeometry& cut, long b, double smallFraction) {
+  const auto ijk = bg.ijk(b);
+  long best = -1;
+  double bestOpen = 0.0;
+  for (int f = 0; f < 6; ++f) {
+    auto n = ijk;
+    n[f / 2] += f % 2 ? 1 : -1;
+    if (!bg.inside(n[0], n[1], n[2])) continue;
+    const long nb = bg.index(n[0], n[1], n[2]);
+    const double open = cut.openFraction(b, static_cast<CellFace>(f));
+    if (cut.fluidFraction(nb) < smallFraction || open <= 0.0) continue;
+    if (open > bestOpen || (open == bestOpen && nb < best)) {
+      best = nb;
+      bestOpen = open;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+CellGroups groupCells(const CartesianBackground& bg, const std::vector<bool>& fluid, const CutCellGeometry* cut,
+                      double smallFraction) {
+  CellGroups g;
+  const long nBg = bg.size();
+  std::vector<long> master(nBg, -1);  // the background cell whose group b belongs to
+  for (long b = 0; b < nBg; ++b) {
+    if (!fluid[b]) continue;
+    master[b] = b;
+    if (!cut || cut->fluidFraction(b) >= smallFraction) continue;
+    const long m = masterOf(bg, *cut, b, smallFraction);
+    if (m >= 0) {
+      master[b] = m;
+      ++g.mergedCells;
+    } else {
+      ++g.unmergedSmallCells;
+    }
+  }
+  g.globalOfBackground.assign(nBg, -1);
+  for (long b = 0; b < nBg; ++b)
+    if (master[b] == b) {
+      g.globalOfBackground[b] = static_cast<int>(g.backgroundOfGlobal.size());
+      g.backgroundOfGlobal.push_back(b);
+      g.members.push_back({b});
+    }
+  for (long b = 0; b < nBg; ++b)
+    if (master[b] >= 0 && master[b] != b) {
+      const int id = g.globalOfBackground[master[b]];
+      g.globalOfBackground[b] = id;
+      g.members[id].push_back(b);
+    }
+  return g;
+}
+
+}  // namespace parcelflow::cfd
