@@ -3,18 +3,14 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include "case_reader.h"
 #include "cfd/config_error.hpp"
+#include "tests/unit/coupling/case_folder_error.hpp"
 
 namespace pc = parcelflow::coupling;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -35,18 +31,7 @@ std::string couplingError(const std::string& coupling) {
 
 // readCase on a folder holding this case.yaml (the gas checks need the gas section).
 std::string caseError(const std::string& yaml) {
-  const fs::path folder = fs::temp_directory_path() / ("parcelflow_filtered_drag_" + std::to_string(::getpid()));
-  fs::create_directories(folder);
-  std::ofstream(folder / "case.yaml") << kCase << yaml << "boundaries: {zmax: {type: pressure_outlet}}\n";
-  std::ofstream(folder / "bed.in") << "# empty\n";
-  std::string message;
-  try {
-    pc::readCase(folder.string());
-  } catch (const parcelflow::cfd::ConfigError& e) {
-    message = e.what();
-  }
-  fs::remove_all(folder);
-  return message;
+  return pc::test::caseFolderError(std::string(kCase) + yaml + "boundaries: {zmax: {type: pressure_outlet}}\n");
 }
 
 void expectMentions(const std::string& message, const std::vector<std::string>& parts) {
