@@ -87,13 +87,14 @@ FilteredDragSettings readFilteredDrag(const YamlSection& s, const std::string& d
 }
 
 CouplingSettings readCoupling(const YamlSection& s) {
-  s.allowOnly({"drag", "filtered_drag", "kernel", "gas_fraction_floor", "guards"});
+  s.allowOnly({"drag", "filtered_drag", "kernel", "gas_fraction_floor", "excess_solids", "guards"});
   CouplingSettings c;
   c.drag = s.word("drag", c.drag, dragLawNames());
   c.filtered_drag = readFilteredDrag(s, c.drag);
   // Below 0.01 over-filled cells give the gas Courant numbers of 100 and more (coupling/README.md).
   c.gas_fraction_floor =
       s.number("gas_fraction_floor", c.gas_fraction_floor, Range{kMinGasFractionFloor, 1.0, false, true});
+  c.excess_solids = s.word("excess_solids", c.excess_solids, {"discard", "spill"});
   if (s.has("guards")) c.guards = readGuards(s.map("guards"));
   if (s.has("kernel")) {
     const YamlSection k = s.map("kernel");

@@ -9,6 +9,7 @@
 
 #include "cfd/config_error.hpp"
 #include "cfd/diffusion_smoother.hpp"
+#include "cfd/excess_solids_spill.hpp"
 #include "cfd/field_writer.hpp"
 #include "cfd/gas_checkpoint.hpp"
 #include "cfd/gas_solver.hpp"
@@ -185,6 +186,7 @@ void CoupledRun::initialize() {
     kernel_reach.length = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
   kernel_reach.parcel_scale = cs.coupling.kernel.parcel_scale;
   kernel_reach.smoothing_length = cs.coupling.kernel.smoothing_length;
+  kernel_reach.spills_excess = cs.coupling.excess_solids == "spill";
   kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
                                             grid.spacing[2] * grid.cells[2]});
   const cfd::LinearSolverSettings& pressure = s.case_def.gas.solver.pressure;
@@ -243,6 +245,9 @@ bool CoupledRun::advance() {
   s.counters.fallbacks += static_cast<long>(transfer.fallbacks);
   s.coupler->depositSolids(s.solids.solid_fraction);
   if (s.smoother) s.smoother->apply(s.solids.solid_fraction);
+  if (cs.coupling.excess_solids == "spill")
+    s.counters.floor_spills +=
+        cfd::spillExcessSolids(mesh, s.solids.solid_fraction, 1.0 - cs.coupling.gas_fraction_floor).cells;
   s.gas_fraction.resize(n_owned);
   for (int c = 0; c < n_owned; ++c) {
     const double a = 1.0 - s.solids.solid_fraction[c];
@@ -424,15 +429,16 @@ void CoupledRun::finalize() {
   if (s.rank == 0) {
     std::printf("%s\n", formatProgress(s.progress).c_str());
     std::printf("parcelflow: done: %ld gas steps, %.6g s simulated in %.1f s wall; lowest gas fraction %.4f; "
-                "gas-fraction floor %.3f hit in %ld cell-steps, drag at the floor for %ld parcel-steps, "
+                "gas-fraction floor %.3f hit in %ld cell-steps (solids above it moved to neighbours in %ld), "
+                "drag at the floor for %ld parcel-steps, "
                 "drag input invalid for %ld and a_g above 1 for %ld parcel-steps, filtered-drag correction "
                 "bounded for %ld; "
                 "%ld parcel-steps without a fluid cell, %ld in a neighbouring cell (centroid kernel); "
                 "%ld parcels lost\n",
                 s.loop.step, s.loop.time, s.progress.wall_seconds, total.min_gas_fraction,
-                s.case_def.settings.coupling.gas_fraction_floor, total.floor_hits, total.drag_floored,
-                total.drag_invalid, total.drag_above_one, total.drag_filter_clamped, total.orphans, total.fallbacks,
-                lost);
+                s.case_def.settings.coupling.gas_fraction_floor, total.floor_hits, total.floor_spills,
+                total.drag_floored, total.drag_invalid, total.drag_above_one, total.drag_filter_clamped,
+                total.orphans, total.fallbacks, lost);
     std::printf("parcelflow: gas: %.1f pressure iterations per step, pressure preconditioner built in %ld of %ld "
                 "steps, %ld linear solves stopped at max_iterations\n",
                 s.loop.step > 0 ? static_cast<double>(total.pressure_iterations) / s.loop.step : 0.0,

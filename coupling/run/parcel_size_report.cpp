@@ -23,11 +23,12 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
     if (widened) lines.back() += formatNumbers(", spread over parcel_scale D = %.4g mm", 1e3 * reach.parcel_scale * D);
     if (reach.smoothing_length > 0.0)
       lines.back() += formatNumbers(", solids fraction smoothed over %.4g mm", 1e3 * reach.smoothing_length);
-    if (ratio > kLargestDiameterOverKernelLength && !widened && !smoothed)
+    if (reach.spills_excess) lines.back() += ", solids above the gas-fraction floor moved to the neighbours";
+    if (ratio > kLargestDiameterOverKernelLength && !widened && !smoothed && !reach.spills_excess)
       lines.push_back(formatNumbers("parcelflow: warning: parcels of D = %.4g mm are %.3g times the kernel length h = "
                              "%.4g mm (limit %.3g): each lands in one or two cells and the gas-fraction floor is "
-                             "hit often; coupling.kernel.smoothing_length (about D/2) or parcel_scale spreads "
-                             "it (coupling/README.md)",
+                             "hit often, which drops solids the gas should see; coupling.excess_solids: spill "
+                             "keeps them (coupling/README.md)",
                              1e3 * D, ratio, 1e3 * reach.length, kLargestDiameterOverKernelLength));
   }
   if (across < kParcelsAcrossTheNarrowestExtent)

@@ -19,11 +19,14 @@ struct KernelReach {
   double parcel_scale = 0.0;    // coupling.kernel.parcel_scale
   double narrowest_extent = 0.0;  // the gas box's smallest length [m]
   double smoothing_length = 0.0;  // coupling.kernel.smoothing_length [m]
+  bool spills_excess = false;     // coupling.excess_solids: spill (the floor keeps the solids volume)
 };
 
 // Parcels wider than the kernel length, with the kernel not widened for them: the gas-fraction floor hits
 // of the 5 mm Goldschmidt parcels (D/h = 1.2), 308,000 cell-steps over 1 s; 132,000 with parcel_scale 2,
 // none with parcel_scale 2 and reflecting faces (392,000 with parcel_scale 1, which widens them by 1.2 only).
+// Spilling the excess (coupling.excess_solids: spill) keeps the solids the floor would drop: the np 8 bed's
+// packed-branch drag then matched the beads' (periodic fluidized bed, cases/coarse_graining/fluidized/README.md).
 constexpr double kLargestDiameterOverKernelLength = 1.0;
 // A smoothing length of at least this share of D also spreads the parcels: L = D/2 removed every floor hit of
 // the np 8 parcels (5 mm) in the 75 mm fluidized bed (2.6 million cell-steps without) and 98 % of np 27's

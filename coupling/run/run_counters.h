@@ -13,6 +13,7 @@ namespace parcelflow::coupling {
 
 struct RunCounters {
   long floor_hits = 0;        // cell-steps whose a_g was raised to the floor
+  long floor_spills = 0;      // cell-steps that gave solids above 1 - floor to their neighbours (excess_solids)
   long drag_floored = 0;      // parcel-steps whose drag was evaluated at the floor
   long drag_invalid = 0;      // parcel-steps with invalid drag input
   long drag_above_one = 0;    // parcel-steps that saw a_g above 1
@@ -24,9 +25,9 @@ struct RunCounters {
 
   // The per-rank counters (summed over ranks for a global value), by name.
   std::vector<std::pair<const char*, long*>> perRank() {
-    return {{"floor_hits", &floor_hits}, {"drag_floored", &drag_floored}, {"drag_invalid", &drag_invalid},
-            {"drag_above_one", &drag_above_one}, {"drag_filter_clamped", &drag_filter_clamped},
-            {"orphans", &orphans}, {"kernel_fallbacks", &fallbacks}};
+    return {{"floor_hits", &floor_hits}, {"floor_spills", &floor_spills}, {"drag_floored", &drag_floored},
+            {"drag_invalid", &drag_invalid}, {"drag_above_one", &drag_above_one},
+            {"drag_filter_clamped", &drag_filter_clamped}, {"orphans", &orphans}, {"kernel_fallbacks", &fallbacks}};
   }
   // The counters that are the same on every rank, by name.
   std::vector<std::pair<const char*, long*>> global() {

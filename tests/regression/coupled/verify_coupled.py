@@ -7,6 +7,11 @@
                 the solids volume of the gas-fraction field (sum (1 - a_g) V) must equal the parcels' volume
                 (sum np pi/6 dp^3) to 1e-9 with smoothing (conservative, no flux through the walls), and the
                 cell-to-cell scatter of a_g in the bed must fall (rms of the differences of neighbours in x).
+  spilled       the fluidized_column bed with a gas-fraction floor of 0.38 (some of the packed bed's cells hold
+                more solids than 0.62), with coupling.excess_solids discard and spill: spilled, the field's
+                solids volume must equal the parcels' to 1e-9 with no cell above 0.62; discarded, it must be
+                short by more than 1e-3. (A floor of 0.42, below the bed's mean packing, leaves 1.4 % for the
+                floor after the 20 passes.)
   packed        the fluidized_column bed at 0.3 m/s (below minimum fluidization) with the Ergun drag law:
                 the pressure drop between the cell layers at 6 and 14 mm must equal, within 3 %, the
                 Ergun pressure drop for the bed's measured voidage. The voidage is read per cell from the
@@ -106,14 +111,21 @@ def check_packed(parcelflow, launcher):
     return abs(error) < 0.03
 
 
-def check_smoothed(parcelflow, launcher):
-    def bed_fields(smoothing):
+def solids_of_the_bed(parcelflow, launcher, key, value, floor=None):
+    """bed_fields(on): the fluidized column run for 2 gas steps with coupling[.kernel].KEY = VALUE when on:
+    the field's solids volume, the parcels' volume, the rms a_g difference of x-neighbours in the bed, the
+    lowest a_g."""
+    def bed_fields(on):
         def edit(s):
             s["time"]["end"] = 0.004
             s["output"]["fields_interval"] = 0.002
             s["output"]["parcels_interval"] = 0.002
-            if smoothing:
-                s["coupling"]["kernel"]["smoothing_length"] = 0.004
+            if floor is not None:
+                s["coupling"]["gas_fraction_floor"] = floor
+            if on and key == "smoothing_length":
+                s["coupling"]["kernel"][key] = value
+            elif on:
+                s["coupling"][key] = value
         out = run_case(parcelflow, launcher, os.path.join(CASES, "fluidized_column"), edit)
         field = h5py.File(os.path.join(out, "fields_000001.h5"))
         mesh = h5py.File(os.path.join(out, "fields_mesh.h5"))
@@ -126,14 +138,29 @@ def check_smoothed(parcelflow, launcher):
         grid = {int(g): e for g, e in zip(ids, a)}
         # neighbours in x in the lowest 3 layers (the packed bed), 5 x 5 x 25 cells
         diffs = [grid[g] - grid[g + 1] for g in grid if g // 25 < 3 and g % 5 < 4]
-        return solids, parcel_volume, math.sqrt(sum(d * d for d in diffs) / len(diffs))
-    plain, volume, scatter = bed_fields(False)
-    smoothed, volume_s, scatter_s = bed_fields(True)
+        return solids, parcel_volume, math.sqrt(sum(d * d for d in diffs) / len(diffs)), float(a.min())
+    return bed_fields
+
+
+def check_smoothed(parcelflow, launcher):
+    bed_fields = solids_of_the_bed(parcelflow, launcher, "smoothing_length", 0.004)
+    plain, volume, scatter, _ = bed_fields(False)
+    smoothed, volume_s, scatter_s, _ = bed_fields(True)
     error = smoothed / volume_s - 1
     print(f"[measured] solids volume of the field / parcels' volume - 1: smoothed {error:.2e}, unsmoothed "
           f"{plain / volume - 1:.2e}; rms a_g difference of x-neighbours in the bed: {scatter:.4f} unsmoothed, "
           f"{scatter_s:.4f} smoothed over 4 mm")
     return abs(error) < 1e-9 and scatter_s < 0.5 * scatter
+
+
+def check_spilled(parcelflow, launcher):
+    bed_fields = solids_of_the_bed(parcelflow, launcher, "excess_solids", "spill", floor=0.38)
+    cut, volume, _, _ = bed_fields(False)
+    spilled, volume_s, _, lowest = bed_fields(True)
+    error = spilled / volume_s - 1
+    print(f"[measured] solids volume of the field / parcels' volume - 1 with a floor of 0.38: spilled {error:.2e}, "
+          f"discarded {cut / volume - 1:.2e}; lowest a_g spilled {lowest:.6f}")
+    return abs(error) < 1e-9 and cut / volume - 1 < -1e-3 and lowest >= 0.38 - 1e-12
 
 
 def main():
@@ -142,7 +169,8 @@ def main():
     check, args = sys.argv[sep + 1], sys.argv[sep + 2:]
     checks = {"terminal": lambda: check_terminal(parcelflow, launcher, int(args[0])),
               "packed": lambda: check_packed(parcelflow, launcher),
-              "smoothed": lambda: check_smoothed(parcelflow, launcher)}
+              "smoothed": lambda: check_smoothed(parcelflow, launcher),
+              "spilled": lambda: check_spilled(parcelflow, launcher)}
     ok = checks[check]()
     print(f"{1 if ok else 0} passed, {0 if ok else 1} failed")
     return 0 if ok else 1

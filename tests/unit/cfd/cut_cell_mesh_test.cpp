@@ -9,6 +9,7 @@
 
 #include "cfd/cell_groups.hpp"
 #include "cfd/mesh_builder.hpp"
+#include "tests/unit/cfd/column_geometry.hpp"
 #include "cfd/surface_from_geometry.hpp"
 
 using namespace parcelflow::cfd;
@@ -23,18 +24,11 @@ MeshSettings cutColumnMesh() {
   return s;
 }
 
-// A column with a narrower exit tube and a baffle cut out with its own wall patch.
-Geometry columnGeometry() {
-  return Geometry({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.1, 0, 0.4), ""},
-                   {Geometry::Op::Union, Primitive::cylinder(0, 0, 0.04, 0.4, 0.5), ""},
-                   {Geometry::Op::Cut, Primitive::box(Vec3(-0.03, -0.03, 0.2), Vec3(0.03, 0.03, 0.24)),
-                    "baffle"}});
-}
 }  // namespace
 
 TEST(CutCellMesh, VolumesClosureAndPatches) {
   const MeshSettings settings = cutColumnMesh();
-  const Geometry geometry = columnGeometry();
+  const Geometry geometry = test::columnGeometry();
   const Mesh m = MeshBuilder::build(settings, geometry, MPI_COMM_WORLD);
   long owned = m.nOwnedCells(), total = 0;
   MPI_Allreduce(&owned, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -135,5 +129,7 @@ TEST(CutCellMesh, SmallCellsMergedIntoANeighbour) {
   // master (21, 12) on whichever rank holds that cell.
   const int sliver = m.localCellOfBackground(22, 12, 0), master = m.localCellOfBackground(21, 12, 0);
   EXPECT_EQ(sliver, master);
-  if (master >= 0) EXPECT_EQ(m.backgroundIndex(master), m.background().index(21, 12, 0));
+  if (master >= 0) {
+    EXPECT_EQ(m.backgroundIndex(master), m.background().index(21, 12, 0));
+  }
 }

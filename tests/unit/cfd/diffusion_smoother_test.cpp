@@ -9,6 +9,7 @@
 
 #include "cfd/diffusion_smoother.hpp"
 #include "cfd/mesh_builder.hpp"
+#include "tests/unit/cfd/same_on_rank_zero_alone.hpp"
 
 using namespace parcelflow::cfd;
 
@@ -82,16 +83,9 @@ TEST(DiffusionSmoother, GivesTheSameFieldOnAnyNumberOfRanks) {
   std::vector<double> s(m.nOwnedCells());
   for (int c = 0; c < m.nOwnedCells(); ++c) s[c] = rough(m, c);
   smoother.apply(s);
-  // the value of every cell, by global id, summed over ranks (each cell owned once)
-  std::vector<double> global(m.nGlobalCells(), 0.0);
-  for (int c = 0; c < m.nOwnedCells(); ++c) global[m.globalId(c)] = s[c];
-  MPI_Allreduce(MPI_IN_PLACE, global.data(), static_cast<int>(global.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  const std::vector<double> global = test::byGlobalId(m, s);
   // the same problem solved by rank 0 alone
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm self;
-  MPI_Comm_split(MPI_COMM_WORLD, rank, 0, &self);
-  if (rank == 0) {
+  test::onRankZeroAlone([&](MPI_Comm self) {
     MeshSettings settings;
     settings.lengths = Vec3(0.06, 0.03, 0.12);
     settings.cells = {10, 5, 20};
@@ -101,6 +95,5 @@ TEST(DiffusionSmoother, GivesTheSameFieldOnAnyNumberOfRanks) {
     for (int c = 0; c < alone.nOwnedCells(); ++c) t[c] = rough(alone, c);
     serial.apply(t);
     for (int c = 0; c < alone.nOwnedCells(); ++c) EXPECT_NEAR(global[alone.globalId(c)], t[c], 1e-10);
-  }
-  MPI_Comm_free(&self);
+  });
 }

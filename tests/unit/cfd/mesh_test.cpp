@@ -7,6 +7,7 @@
 #include <set>
 
 #include "cfd/mesh_builder.hpp"
+#include "tests/unit/cfd/column_geometry.hpp"
 
 using namespace parcelflow::cfd;
 
@@ -20,16 +21,10 @@ MeshSettings columnMesh(int ghostLayers) {
   return s;
 }
 
-Geometry columnGeometry() {
-  return Geometry({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.1, 0, 0.4), ""},
-                   {Geometry::Op::Union, Primitive::cylinder(0, 0, 0.04, 0.4, 0.5), ""},
-                   {Geometry::Op::Cut, Primitive::box(Vec3(-0.03, -0.03, 0.2), Vec3(0.03, 0.03, 0.24)),
-                    "baffle"}});
-}
 }  // namespace
 
 TEST(Mesh, CountsVolumesAndPatches) {
-  const Mesh m = MeshBuilder::build(columnMesh(2), columnGeometry(), MPI_COMM_WORLD);
+  const Mesh m = MeshBuilder::build(columnMesh(2), test::columnGeometry(), MPI_COMM_WORLD);
   long owned = m.nOwnedCells();
   long total = 0;
   MPI_Allreduce(&owned, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
@@ -55,7 +50,7 @@ TEST(Mesh, CountsVolumesAndPatches) {
 
 TEST(Mesh, BackgroundLookupAndGhostDepth) {
   for (int layers : {1, 2, 3}) {
-    const Mesh m = MeshBuilder::build(columnMesh(layers), columnGeometry(), MPI_COMM_WORLD);
+    const Mesh m = MeshBuilder::build(columnMesh(layers), test::columnGeometry(), MPI_COMM_WORLD);
     const auto& bg = m.background();
     EXPECT_DOUBLE_EQ(bg.spacing()[0], 0.02);
     for (int c = 0; c < m.nLocalCells(); ++c) {
@@ -83,7 +78,7 @@ TEST(Mesh, BackgroundLookupAndGhostDepth) {
             const int i = ijk[0] + di, j = ijk[1] + dj, k = ijk[2] + dk;
             if (!bg.inside(i, j, k)) continue;
             const Vec3 x = bg.centre(i, j, k);
-            if (columnGeometry().isFluid(x)) {
+            if (test::columnGeometry().isFluid(x)) {
               EXPECT_GE(m.localCellOfBackground(i, j, k), 0);
             }
           }
@@ -92,7 +87,7 @@ TEST(Mesh, BackgroundLookupAndGhostDepth) {
 }
 
 TEST(Mesh, HaloExchange) {
-  const Mesh m = MeshBuilder::build(columnMesh(2), columnGeometry(), MPI_COMM_WORLD);
+  const Mesh m = MeshBuilder::build(columnMesh(2), test::columnGeometry(), MPI_COMM_WORLD);
   ScalarField f(m.nLocalCells(), -1.0);
   VectorField v(m.nLocalCells(), Vec3::Zero());
   for (int c = 0; c < m.nOwnedCells(); ++c) {
@@ -113,7 +108,7 @@ TEST(Mesh, PartitionWeightsShiftTheBalance) {
   if (size == 1) GTEST_SKIP() << "needs more than one rank";
   MeshSettings s = columnMesh(1);
   s.partitionWeights = {{Primitive::box(Vec3(-1, -1, 0), Vec3(1, 1, 0.2)), 10}};
-  const Mesh m = MeshBuilder::build(s, columnGeometry(), MPI_COMM_WORLD);
+  const Mesh m = MeshBuilder::build(s, test::columnGeometry(), MPI_COMM_WORLD);
   double weight = 0;
   for (int c = 0; c < m.nOwnedCells(); ++c) weight += m.cellCentre(c)[2] < 0.2 ? 10 : 1;
   const double total = m.sum(weight), most = m.max(weight);

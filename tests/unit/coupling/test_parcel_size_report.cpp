@@ -46,6 +46,13 @@ TEST(ParcelSizeReport, AWidenedKernelAndAWideBedAreWithinTheLimits) {
   EXPECT_TRUE(mentions(smooth_lines[0], "smoothed over 2.5 mm")) << smooth_lines[0];
   smoothed.smoothing_length = 0.002;  // less than D/2: the warning stays
   EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0}, smoothed).size(), 2u);
+  // spilling the excess solids instead: no kernel warning either, and the description says so
+  pc::KernelReach spilled = widened;
+  spilled.parcel_scale = 0.0;
+  spilled.spills_excess = true;
+  const auto spill_lines = pc::parcelSizeReport({0.005, 8.0}, spilled);
+  ASSERT_EQ(spill_lines.size(), 1u);
+  EXPECT_TRUE(mentions(spill_lines[0], "moved to the neighbours")) << spill_lines[0];
   // np 8 parcels of 3 mm (the np8 bed's small class alone): D/h = 0.72, 5 across: only the second limit
   EXPECT_EQ(pc::parcelSizeReport({0.003, 8.0}, kGoldschmidt).size(), 2u);
 }
