@@ -219,10 +219,15 @@ Vec3 CutCellGeometry::fluidCentroid(long cell) const {
   return background_.centre(ijk[0], ijk[1], ijk[2]);
 }
 
-Vec3 CutCellGeometry::openCentroid(long cell, CellFace face) const {
+std::array<int, 3> CutCellGeometry::faceCell(long cell, CellFace face) const {
   auto ijk = background_.ijk(cell);
+  ijk[face / 2] += face % 2;
+  return ijk;
+}
+
+Vec3 CutCellGeometry::openCentroid(long cell, CellFace face) const {
+  const auto ijk = faceCell(cell, face);
   const int axis = face / 2;
-  ijk[axis] += face % 2;
   const auto& cutFaces = cutFaceCentroids_[axis];
   const long index = faceIndex(axis, ijk[0], ijk[1], ijk[2]);
   const auto it = std::lower_bound(cutFaces.begin(), cutFaces.end(), std::make_pair(index, Vec3(Vec3::Zero())),
@@ -235,9 +240,8 @@ Vec3 CutCellGeometry::openCentroid(long cell, CellFace face) const {
 }
 
 double CutCellGeometry::openFraction(long cell, CellFace face) const {
-  auto ijk = background_.ijk(cell);
+  const auto ijk = faceCell(cell, face);
   const int axis = face / 2;
-  ijk[axis] += face % 2;
   return openFraction_[axis][faceIndex(axis, ijk[0], ijk[1], ijk[2])];
 }
 

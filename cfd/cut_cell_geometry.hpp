@@ -11,6 +11,7 @@
 // fluid or solid by an inside test of their centre; every other cell's box is clipped by the fluid
 // solid with CGAL's corefinement, and the clipped polyhedron's faces on the box's planes are the open
 // face areas, the remaining faces the wall.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,8 @@ class CutCellGeometry {
 
  private:
   long faceIndex(int axis, int i, int j, int k) const;
+  // (i, j, k) of a cell's face on its axis' plane of faces (the cell's, or the next one up for a + face)
+  std::array<int, 3> faceCell(long cell, CellFace face) const;
 
   CartesianBackground background_;
   std::vector<double> fluidFraction_;

@@ -99,7 +99,7 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
     if (!cut) {
       mesh.cellCentre_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
       mesh.cellVolume_.push_back(bg.cellVolume());
-    } else if (members.size() == 1) {
+    } else if (members.size() == 1) {  // exactly the geometry's centroid (v c / v is not c to the last bit)
       mesh.cellCentre_.push_back(cut->fluidCentroid(b));
       mesh.cellVolume_.push_back(bg.cellVolume() * cut->fluidFraction(b));
     } else {
@@ -232,15 +232,8 @@ void MeshBuilder::buildFaces(Mesh& mesh, const Geometry& geometry, const std::op
               continue;
             }
           }
-          const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
-          PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
-          mesh.boundaryCell_.push_back(c);
-          mesh.boundaryArea_.push_back(s * area * e);
-          mesh.boundaryMagArea_.push_back(area);
-          mesh.boundaryCentre_.push_back(faceCentre);
-          mesh.boundaryDelta_.push_back(cut ? std::abs(faceCentre[d] - mesh.cellCentre_[c][d]) : 0.5 * h[d]);
-          mesh.boundaryPatch_.push_back(pid);
-          ++localCount[pid];
+          addBoundaryFace(mesh, c, s * area * e, area, faceCentre,
+                          cut ? std::abs(faceCentre[d] - mesh.cellCentre_[c][d]) : 0.5 * h[d], patch, localCount);
         }
       }
     }
@@ -292,15 +285,20 @@ void MeshBuilder::addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell,
   double distance = toWall.dot(normal);
   if (!(distance > 0.0)) distance = toWall.norm();
   PARCELFLOW_ASSERT(distance > 0.0, "a cut cell's fluid centroid lies on its wall centroid");
-  const std::string patch = geometry.wallPatchAt(wall.centroid + 1e-6 * h * normal);
+  addBoundaryFace(mesh, cell, wall.areaVector, magArea, wall.centroid, distance,
+                  geometry.wallPatchAt(wall.centroid + 1e-6 * h * normal), localCount);
+}
+
+void MeshBuilder::addBoundaryFace(Mesh& mesh, int cell, const Vec3& area, double magArea, const Vec3& centre,
+                                  double delta, const std::string& patch, std::vector<long>& localCount) {
   const auto& names = mesh.patchNames_;
   const int pid = static_cast<int>(std::find(names.begin(), names.end(), patch) - names.begin());
   PARCELFLOW_ASSERT(pid < static_cast<int>(names.size()), "unknown patch " + patch);
   mesh.boundaryCell_.push_back(cell);
-  mesh.boundaryArea_.push_back(wall.areaVector);
+  mesh.boundaryArea_.push_back(area);
   mesh.boundaryMagArea_.push_back(magArea);
-  mesh.boundaryCentre_.push_back(wall.centroid);
-  mesh.boundaryDelta_.push_back(distance);
+  mesh.boundaryCentre_.push_back(centre);
+  mesh.boundaryDelta_.push_back(delta);
   mesh.boundaryPatch_.push_back(pid);
   ++localCount[pid];
 }

@@ -28,6 +28,9 @@ class MeshBuilder {
                               bool cutCells);
   static void addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,
                              std::vector<long>& localCount);
+  // A boundary face of `cell` on the patch named `patch` (counted in localCount).
+  static void addBoundaryFace(Mesh& mesh, int cell, const Vec3& area, double magArea, const Vec3& centre,
+                              double delta, const std::string& patch, std::vector<long>& localCount);
 };
 
 }  // namespace parcelflow::cfd

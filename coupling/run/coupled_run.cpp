@@ -55,6 +55,7 @@ struct CoupledRun::State {
   std::unique_ptr<RunWarnings> warnings;
   std::unique_ptr<BlowupGuard> guard;
   std::unique_ptr<cfd::DiffusionSmoother> smoother;  // coupling.kernel.smoothing_length > 0
+  bool spill_excess_solids = false;                   // coupling.excess_solids: spill
 
   int dem_steps = 1;
   LoopState loop;        // step, time, next output times (its counters are only used in checkpoints)
@@ -177,6 +178,7 @@ void CoupledRun::initialize() {
 
   if (cs.coupling.kernel.smoothing_length > 0.0)
     s.smoother = std::make_unique<cfd::DiffusionSmoother>(mesh, cs.coupling.kernel.smoothing_length);
+  s.spill_excess_solids = cs.coupling.excess_solids == "spill";
 
   s.dem->start(checkpoint ? checkpoint->paths.dem : std::string());
   s.dem_steps = cs.time.demStepsPerGasStep();
@@ -186,7 +188,7 @@ void CoupledRun::initialize() {
     kernel_reach.length = std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);
   kernel_reach.parcel_scale = cs.coupling.kernel.parcel_scale;
   kernel_reach.smoothing_length = cs.coupling.kernel.smoothing_length;
-  kernel_reach.spills_excess = cs.coupling.excess_solids == "spill";
+  kernel_reach.spills_excess = s.spill_excess_solids;
   kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
                                             grid.spacing[2] * grid.cells[2]});
   const cfd::LinearSolverSettings& pressure = s.case_def.gas.solver.pressure;
@@ -245,7 +247,7 @@ bool CoupledRun::advance() {
   s.counters.fallbacks += static_cast<long>(transfer.fallbacks);
   s.coupler->depositSolids(s.solids.solid_fraction);
   if (s.smoother) s.smoother->apply(s.solids.solid_fraction);
-  if (cs.coupling.excess_solids == "spill")
+  if (s.spill_excess_solids)
     s.counters.floor_spills +=
         cfd::spillExcessSolids(mesh, s.solids.solid_fraction, 1.0 - cs.coupling.gas_fraction_floor).cells;
   s.gas_fraction.resize(n_owned);

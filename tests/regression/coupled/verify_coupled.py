@@ -111,8 +111,8 @@ def check_packed(parcelflow, launcher):
     return abs(error) < 0.03
 
 
-def solids_of_the_bed(parcelflow, launcher, key, value, floor=None):
-    """bed_fields(on): the fluidized column run for 2 gas steps with coupling[.kernel].KEY = VALUE when on:
+def solids_of_the_bed(parcelflow, launcher, setting, floor=None):
+    """bed_fields(on): the fluidized column run for 2 gas steps, with setting(coupling section) applied when on:
     the field's solids volume, the parcels' volume, the rms a_g difference of x-neighbours in the bed, the
     lowest a_g."""
     def bed_fields(on):
@@ -122,10 +122,8 @@ def solids_of_the_bed(parcelflow, launcher, key, value, floor=None):
             s["output"]["parcels_interval"] = 0.002
             if floor is not None:
                 s["coupling"]["gas_fraction_floor"] = floor
-            if on and key == "smoothing_length":
-                s["coupling"]["kernel"][key] = value
-            elif on:
-                s["coupling"][key] = value
+            if on:
+                setting(s["coupling"])
         out = run_case(parcelflow, launcher, os.path.join(CASES, "fluidized_column"), edit)
         field = h5py.File(os.path.join(out, "fields_000001.h5"))
         mesh = h5py.File(os.path.join(out, "fields_mesh.h5"))
@@ -143,7 +141,7 @@ def solids_of_the_bed(parcelflow, launcher, key, value, floor=None):
 
 
 def check_smoothed(parcelflow, launcher):
-    bed_fields = solids_of_the_bed(parcelflow, launcher, "smoothing_length", 0.004)
+    bed_fields = solids_of_the_bed(parcelflow, launcher, lambda c: c["kernel"].update(smoothing_length=0.004))
     plain, volume, scatter, _ = bed_fields(False)
     smoothed, volume_s, scatter_s, _ = bed_fields(True)
     error = smoothed / volume_s - 1
@@ -154,7 +152,7 @@ def check_smoothed(parcelflow, launcher):
 
 
 def check_spilled(parcelflow, launcher):
-    bed_fields = solids_of_the_bed(parcelflow, launcher, "excess_solids", "spill", floor=0.38)
+    bed_fields = solids_of_the_bed(parcelflow, launcher, lambda c: c.update(excess_solids="spill"), floor=0.38)
     cut, volume, _, _ = bed_fields(False)
     spilled, volume_s, _, lowest = bed_fields(True)
     error = spilled / volume_s - 1
