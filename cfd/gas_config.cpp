@@ -1,5 +1,6 @@
 #include "gas_config.hpp"
 
+#include <filesystem>
 #include <utility>
 #include <vector>
 
@@ -27,10 +28,11 @@ GasConfig GasConfig::fromFile(const std::string& path) {
   } catch (const YAML::Exception& e) {
     throw ConfigError("cannot read " + path + ": " + e.what());
   }
-  return GasConfig(root);
+  return GasConfig(root, std::filesystem::path(path).parent_path().string());
 }
 
-GasConfig::GasConfig(const YAML::Node& root) {
+GasConfig::GasConfig(const YAML::Node& root, const std::string& caseFolder)
+    : caseFolder_(caseFolder.empty() ? "." : caseFolder) {
   const YamlSection top(root, "");
   top.allowAnyKeys();  // the case's reader checks the top-level keys: it knows the coupling layer's too
   settings_.mesh = readMesh(top.map("mesh"));
@@ -41,7 +43,7 @@ GasConfig::GasConfig(const YAML::Node& root) {
   settings_.solver = top.has("solver") ? readSolver(top.map("solver")) : SolverSettings{};
 }
 
-MeshSettings GasConfig::readMesh(const YamlSection& s) {
+MeshSettings GasConfig::readMesh(const YamlSection& s) const {
   s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights", "walls"});
   MeshSettings m;
   // Up to 10 km, far beyond any apparatus: at 1e300 m the first pressure solve did no iteration and the
@@ -62,7 +64,7 @@ MeshSettings GasConfig::readMesh(const YamlSection& s) {
     for (const auto& item : s.listOfMaps("partition_weights")) {
       item.allowOnly({"region", "weight"});
       PartitionWeight w;
-      w.region = Primitive::fromYaml(item.map("region"));
+      w.region = Primitive::fromYaml(item.map("region"), caseFolder_);
       w.weight = item.integer("weight", std::nullopt, 1, 1000);
       m.partitionWeights.push_back(w);
     }
@@ -70,12 +72,12 @@ MeshSettings GasConfig::readMesh(const YamlSection& s) {
   return m;
 }
 
-Geometry GasConfig::readGeometry(const YamlSection& top) {
+Geometry GasConfig::readGeometry(const YamlSection& top) const {
   if (!top.has("geometry")) return Geometry();
   return readShapeList(top, "geometry");
 }
 
-Geometry GasConfig::readShapeList(const YamlSection& parent, const std::string& key) {
+Geometry GasConfig::readShapeList(const YamlSection& parent, const std::string& key) const {
   std::vector<Geometry::Item> items;
   for (const auto& item : parent.listOfMaps(key)) {
     item.allowOnly({"op", "shape", "patch"});
@@ -84,7 +86,7 @@ Geometry GasConfig::readShapeList(const YamlSection& parent, const std::string& 
     if (op == "union" && !patch.empty())
       item.fail("patch", "is only allowed with op: cut (it names the walls of the cut-out)");
     items.push_back({op == "union" ? Geometry::Op::Union : Geometry::Op::Cut,
-                     Primitive::fromYaml(item.map("shape")), patch});
+                     Primitive::fromYaml(item.map("shape"), caseFolder_), patch});
   }
   return Geometry(items);
 }
@@ -135,7 +137,7 @@ std::vector<BoundarySettings> GasConfig::readBoundaries(const YamlSection& s) {
   return out;
 }
 
-std::vector<InletRegionSettings> GasConfig::readInletRegions(const YamlSection& top) {
+std::vector<InletRegionSettings> GasConfig::readInletRegions(const YamlSection& top) const {
   std::vector<InletRegionSettings> out;
   if (!top.has("inlet_regions")) return out;
   for (const auto& item : top.listOfMaps("inlet_regions")) {

@@ -13,8 +13,9 @@ class YamlSection;
 
 class GasConfig {
  public:
-  // `root` is the parsed case.yaml (or any map holding the gas keys).
-  explicit GasConfig(const YAML::Node& root);
+  // `root` is the parsed case.yaml (or any map holding the gas keys); STL files named in it are relative
+  // to `caseFolder`.
+  explicit GasConfig(const YAML::Node& root, const std::string& caseFolder = ".");
   static GasConfig fromFile(const std::string& path);
 
   const GasSettings& settings() const { return settings_; }
@@ -23,12 +24,12 @@ class GasConfig {
   static const std::vector<std::string>& ownedTopLevelKeys();
 
  private:
-  static MeshSettings readMesh(const YamlSection& s);
-  static Geometry readGeometry(const YamlSection& top);
-  static Geometry readShapeList(const YamlSection& parent, const std::string& key);
+  MeshSettings readMesh(const YamlSection& s) const;
+  Geometry readGeometry(const YamlSection& top) const;
+  Geometry readShapeList(const YamlSection& parent, const std::string& key) const;
   static GasProperties readGas(const YamlSection& s);
   static std::vector<BoundarySettings> readBoundaries(const YamlSection& s);
-  static std::vector<InletRegionSettings> readInletRegions(const YamlSection& top);
+  std::vector<InletRegionSettings> readInletRegions(const YamlSection& top) const;
   static SolverSettings readSolver(const YamlSection& s);
   // pressure: the pressure solver, which keeps its preconditioner over steps (preconditioner_reuse) and
   // solves once per PISO corrector (final_rel_tol for the last one).
@@ -36,6 +37,7 @@ class GasConfig {
                                                bool pressure);
   // criterion and the tolerance keys of a linear solver map (each allowed only with its criterion).
   static void readStoppingCriterion(const YamlSection& s, LinearSolverSettings& l, bool pressure);
+  std::string caseFolder_;
   GasSettings settings_;
 };
 

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "config_error.hpp"
+#include "internal_error.hpp"
+#include "solid_surface.hpp"
 #include "yaml_section.hpp"
 
 namespace parcelflow::cfd {
@@ -36,9 +39,24 @@ Primitive Primitive::cone(double cx, double cy, double radiusZmin, double radius
   return p;
 }
 
-Primitive Primitive::fromYaml(const YamlSection& section) {
-  const std::string kind = section.singleKey({"box", "cylinder", "cone"});
+Primitive Primitive::surface(std::shared_ptr<const SolidSurface> solid) {
+  Primitive p;
+  p.kind_ = Kind::Surface;
+  p.lo_ = solid->lo();
+  p.hi_ = solid->hi();
+  p.solid_ = std::move(solid);
+  return p;
+}
+
+Primitive Primitive::fromYaml(const YamlSection& section, const std::string& caseFolder) {
+  const std::string kind = section.singleKey({"box", "cylinder", "cone", "stl"});
   const YamlSection s = section.map(kind);
+  if (kind == "stl") {
+    s.allowOnly({"file"});
+    const std::filesystem::path file = s.text("file", std::nullopt);
+    const std::string path = file.is_absolute() ? file.string() : (std::filesystem::path(caseFolder) / file).string();
+    return surface(SolidSurface::fromStl(path, s.keyPath("file")));
+  }
   if (kind == "box") {
     s.allowOnly({"min", "max"});
     const Vec3 lo = s.vec3("min", std::nullopt, Range::any());
@@ -68,6 +86,7 @@ Primitive Primitive::fromYaml(const YamlSection& section) {
 }
 
 bool Primitive::contains(const Vec3& x) const {
+  if (kind_ == Kind::Surface) return solid_->contains(x);
   if (kind_ == Kind::Box)
     return x[0] >= lo_[0] && x[0] <= hi_[0] && x[1] >= lo_[1] && x[1] <= hi_[1] && x[2] >= lo_[2] &&
            x[2] <= hi_[2];
@@ -78,7 +97,13 @@ bool Primitive::contains(const Vec3& x) const {
   return dx * dx + dy * dy <= r * r;
 }
 
+const TriangleSurface& Primitive::triangles() const {
+  PARCELFLOW_ASSERT(kind_ == Kind::Surface, "triangles() of a primitive that is not a surface");
+  return solid_->triangles();
+}
+
 double Primitive::volume() const {
+  if (kind_ == Kind::Surface) return solid_->triangles().volume();
   if (kind_ == Kind::Box) return (hi_ - lo_).prod();
   const double h = hi_[2] - lo_[2];
   if (kind_ == Kind::Cone) return M_PI * h * (radius_ * radius_ + radius_ * radiusTop_ + radiusTop_ * radiusTop_) / 3;

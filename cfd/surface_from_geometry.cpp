@@ -70,6 +70,7 @@ TriangleSurface boxSurface(const Vec3& lo, const Vec3& hi) { return cgal::toSurf
 
 TriangleSurface surfaceOfPrimitive(const Primitive& primitive, int segments, double phase) {
   if (primitive.kind() == Primitive::Kind::Box) return boxSurface(primitive.lo(), primitive.hi());
+  if (primitive.kind() == Primitive::Kind::Surface) return primitive.triangles();
   if (segments < 3)
     throw ConfigError("circle segments", std::to_string(segments), "an integer of at least 3");
   return roundSurface(primitive, segments, phase);

@@ -197,7 +197,7 @@ CaseDefinition readCase(const std::string& case_folder) {
   CaseDefinition c;
   c.folder = case_folder;
   c.settings = readCouplingSettings(root);
-  c.gas = cfd::GasConfig(root).settings();
+  c.gas = cfd::GasConfig(root, case_folder).settings();
   checkFilteredDragAgainstGas(c.settings.coupling, c.gas.gas);
   // The transfer kernels know background cells, not cut cells merged with their neighbours (issue 31, part 3).
   if (c.gas.mesh.walls == cfd::WallRepresentation::CutCells)

@@ -1,13 +1,18 @@
 // Bad fluid surfaces stop with a ConfigError naming the setting, the file and what is wrong: missing,
-// unreadable, open, inconsistently oriented, inverted, self-intersecting, or leaving no fluid cell.
+// unreadable, open, inconsistently oriented, inverted, self-intersecting, or leaving no fluid cell. An STL
+// named in case.yaml (`{stl: {file: ...}}`) is found relative to the case folder and selects the cells
+// whose centre is inside it.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "cfd/config_error.hpp"
 #include "cfd/cut_cell_geometry.hpp"
+#include "cfd/gas_config.hpp"
 #include "cfd/stl_reader.hpp"
 #include "cut_cell_test_surfaces.hpp"
 
@@ -82,4 +87,52 @@ TEST(CutCellInput, NoFluidInTheMeshBox) {
   const CartesianBackground grid(Vec3(2, 2, 2), Vec3(1, 1, 1), {4, 4, 4});
   expectConfigError([&] { CutCellGeometry(cube, grid, "geometry.stl = far_away.stl"); },
                     {"geometry.stl = far_away.stl", "leaves fluid in at least one cell"});
+}
+
+namespace {
+
+const std::string caseWithStl(const std::string& file) {
+  return "mesh: {origin: [0, 0, 0], lengths: [1, 1, 1], cells: [20, 20, 20]}\n"
+         "geometry: [{shape: {box: {min: [0, 0, 0], max: [1, 1, 0.1]}}}, {shape: {stl: {file: " + file + "}}}]\n"
+         "gas: {density: 1.0, viscosity: 1e-5}\n"
+         "boundaries: {zmax: {type: pressure_outlet}, walls: {type: wall}}\n";
+}
+
+}  // namespace
+
+TEST(CutCellInput, StlShapeInCaseYamlSelectsTheCellsInside) {
+  // A cube of side 0.5 turned by 30 degrees about z and 20 about x, in the case folder (the temp directory).
+  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(M_PI / 6, Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(M_PI / 9, Eigen::Vector3d::UnitX())).toRotationMatrix();
+  const Vec3 centre(0.5, 0.5, 0.5);
+  const TempFile file("input_turned_cube.stl");
+  writeBinaryStl(transformed(boxSurface(centre - Vec3(0.25, 0.25, 0.25), centre + Vec3(0.25, 0.25, 0.25)), turn, centre),
+                 file.path());
+  const std::filesystem::path path(file.path());
+  const GasSettings s =
+      GasConfig(YAML::Load(caseWithStl(path.filename().string())), path.parent_path().string()).settings();
+  const Primitive& stl = s.geometry.items().at(1).primitive;
+  ASSERT_EQ(stl.kind(), Primitive::Kind::Surface);
+  EXPECT_NEAR(stl.volume(), 0.125, 1e-6);  // binary STL: corners rounded to single precision
+  // Every cell centre of the 20^3 mesh is fluid exactly when it is in the slab or in the turned cube.
+  long inside = 0, disagree = 0;
+  for (int k = 0; k < 20; ++k)
+    for (int j = 0; j < 20; ++j)
+      for (int i = 0; i < 20; ++i) {
+        const Vec3 x((i + 0.5) / 20, (j + 0.5) / 20, (k + 0.5) / 20);
+        const Vec3 local = turn.transpose() * (x - centre);
+        const bool inCube = local.cwiseAbs().maxCoeff() < 0.25;
+        inside += inCube;
+        disagree += s.geometry.isFluid(x) != (inCube || x[2] <= 0.1);
+      }
+  EXPECT_EQ(disagree, 0);
+  EXPECT_GT(inside, 900);  // about 0.125 * 8000 = 1000 centres
+}
+
+TEST(CutCellInput, StlShapeInCaseYamlMissingFileNamesTheKey) {
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  expectConfigError([&] { GasConfig(YAML::Load(caseWithStl("no_such_vessel.stl")), folder); },
+                    {"geometry[1].shape.stl.file", folder + "/no_such_vessel.stl", "no such file"});
+  expectConfigError([&] { GasConfig(YAML::Load(caseWithStl("a.stl, scale: 2")), folder); },
+                    {"geometry[1].shape.stl", "scale"});
 }
