@@ -9,7 +9,6 @@
 
 namespace parcelflow::cfd {
 
-
 FieldWriter::FieldWriter(const Mesh& mesh, std::string directory, std::string name)
     : mesh_(mesh), directory_(std::move(directory)), name_(std::move(name)) {
   for (int c = 0; c < mesh_.nOwnedCells(); ++c) {
@@ -29,25 +28,40 @@ std::string FieldWriter::snapshotFile(std::size_t index) const { return seriesFi
 
 void FieldWriter::writeMesh() {
   const int n = mesh_.nOwnedCells();
-  const Vec3 h = mesh_.background().spacing();
+  const CartesianBackground& bg = mesh_.background();
+  const Vec3 h = bg.spacing();
+  // A cell is drawn as its background box (a merged cut cell as its master's), whose corners are exact
+  // grid points; a cut cell's centre is its fluid centroid, not the box's.
   // Corners in VTK hexahedron order.
   static const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   std::vector<double> points(static_cast<std::size_t>(n) * 24);
   std::vector<long long> cells(static_cast<std::size_t>(n) * 8), ids(n);
   for (int c = 0; c < n; ++c) {
-    const Vec3 lo = mesh_.cellCentre(c) - 0.5 * h;
+    const auto ijk = bg.ijk(mesh_.backgroundIndex(c));
     for (int k = 0; k < 8; ++k) {
-      for (int d = 0; d < 3; ++d) points[(8 * c + k) * 3 + d] = lo[d] + corner[k][d] * h[d];
+      for (int d = 0; d < 3; ++d) points[(8 * c + k) * 3 + d] = bg.origin()[d] + (ijk[d] + corner[k][d]) * h[d];
       cells[8 * c + k] = 8 * mesh_.globalId(c) + k;
     }
     ids[c] = mesh_.globalId(c);
   }
+  // The fluid fraction of the background boxes a cell spans (a merged cell spans its members'), so that
+  // ParaView shows cut walls: 1 in whole cells.
+  std::vector<int> boxes(n, 0);
+  for (int k = 0; k < bg.n()[2]; ++k)
+    for (int j = 0; j < bg.n()[1]; ++j)
+      for (int i = 0; i < bg.n()[0]; ++i) {
+        const int c = mesh_.localCellOfBackground(i, j, k);
+        if (c >= 0 && c < n) ++boxes[c];
+      }
+  std::vector<double> fluidFraction(n);
+  for (int c = 0; c < n; ++c) fluidFraction[c] = mesh_.cellVolume(c) / (boxes[c] * h.prod());
   const long total = mesh_.nGlobalCells();
   Hdf5Writer file(directory_ + "/" + name_ + "_mesh.h5", mesh_.comm());
   file.writeAt("points", points.data(), 8 * total, pointRow_, 3);
   file.writeAt("cells", cells.data(), total, row_, 8);
   file.writeAt("global_id", ids.data(), total, row_, 1);
+  file.writeAt(kFluidFraction, fluidFraction.data(), total, row_, 1);
   file.close();
 }
 
@@ -106,6 +120,9 @@ void FieldWriter::writeXdmf() const {
     x << "    </Topology>\n    <Geometry GeometryType=\"XYZ\">\n";
     item(std::to_string(8 * n) + " 3", "Float", meshFile + ":/points");
     x << "    </Geometry>\n";
+    x << "    <Attribute Name=\"" << kFluidFraction << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+    item(std::to_string(n), "Float", meshFile + ":/" + kFluidFraction);
+    x << "    </Attribute>\n";
     for (const auto& name : s.scalars) {
       x << "    <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
       item(std::to_string(n), "Float", s.file + ":/" + name);

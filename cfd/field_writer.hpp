@@ -4,7 +4,8 @@
 // order), whatever the number of ranks, so a run continued on other ranks extends the same series;
 // `global_id` holds r.
 //
-// Files in `directory`: <name>_mesh.h5 (/points: 8 corners per cell, /cells: hexahedra, /global_id),
+// Files in `directory`: <name>_mesh.h5 (/points: 8 corners per cell, /cells: hexahedra (a cell's
+// background box), /global_id, /fluid_fraction: fluid volume over the boxes' volume, in every snapshot),
 // <name>_NNNNNN.h5 (one dataset per field at the root, /time), and <name>.xdmf (all snapshots).
 // Collective: every rank of the mesh communicator calls every method.
 #include <string>
@@ -18,6 +19,7 @@ namespace parcelflow::cfd {
 
 class FieldWriter {
  public:
+  static constexpr const char* kFluidFraction = "fluid_fraction";
   FieldWriter(const Mesh& mesh, std::string directory, std::string name);
 
   // Adds fields to the next snapshot; the pointers must stay valid until write().

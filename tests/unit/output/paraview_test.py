@@ -33,6 +33,10 @@ try:
                 # [min, max] of each component, as ParaView's GetRange(component) reports it
                 arrays = {k: np.column_stack([f[k][...].min(axis=0), f[k][...].max(axis=0)]).reshape(-1, 2)
                           .tolist() for k in f if k not in ("time", "position", "connectivity") and n > 0}
+                if name == "fields":  # every snapshot lists the mesh file's fluid fraction beside its fields
+                    with h5py.File(os.path.join(folder, "fields_mesh.h5"), "r") as mesh:
+                        fraction = mesh["fluid_fraction"][...]
+                    arrays["fluid_fraction"] = [[float(fraction.min()), float(fraction.max())]]
                 snapshots.append({"time": float(f["time"][0]), "cells": n,
                                   "points": 8 * n if name == "fields" else n, "arrays": arrays})
         expected[name] = snapshots
