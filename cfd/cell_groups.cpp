@@ -60,4 +60,38 @@ CellGroups groupCells(const CartesianBackground& bg, const std::vector<bool>& fl
   return g;
 }
 
+FluidRegions fluidRegions(const CartesianBackground& bg, const CellGroups& groups, const CutCellGeometry* cut) {
+  const int nGlobal = static_cast<int>(groups.backgroundOfGlobal.size());
+  FluidRegions r;
+  r.ofGlobal.assign(nGlobal, -1);
+  std::vector<int> stack;
+  for (int seed = 0; seed < nGlobal; ++seed) {
+    if (r.ofGlobal[seed] >= 0) continue;
+    const int region = static_cast<int>(r.cells.size());
+    r.cells.push_back(0);
+    r.firstGlobal.push_back(seed);
+    r.ofGlobal[seed] = region;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const int g = stack.back();
+      stack.pop_back();
+      ++r.cells[region];
+      for (long b : groups.members[g]) {
+        const auto ijk = bg.ijk(b);
+        for (int f = 0; f < 6; ++f) {
+          auto n = ijk;
+          n[f / 2] += f % 2 ? 1 : -1;
+          if (!bg.inside(n[0], n[1], n[2])) continue;
+          if (cut && cut->openFraction(b, static_cast<CellFace>(f)) <= 0.0) continue;
+          const int ng = groups.globalOfBackground[bg.index(n[0], n[1], n[2])];
+          if (ng < 0 || r.ofGlobal[ng] >= 0) continue;
+          r.ofGlobal[ng] = region;
+          stack.push_back(ng);
+        }
+      }
+    }
+  }
+  return r;
+}
+
 }  // namespace parcelflow::cfd

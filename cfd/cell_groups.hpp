@@ -28,4 +28,13 @@ struct CellGroups {
 CellGroups groupCells(const CartesianBackground& bg, const std::vector<bool>& fluid, const CutCellGeometry* cut,
                       double smallFraction = smallCellFraction);
 
+// The groups' face-connected fluid regions (joined through faces with open area; cells touching only
+// along an edge or at a corner are apart): a region that no pressure outlet reaches has no pressure level.
+struct FluidRegions {
+  std::vector<int> ofGlobal;      // per group: its region, numbered in the order of the groups' ids
+  std::vector<long> cells;        // per region: its number of groups
+  std::vector<long> firstGlobal;  // per region: its lowest group id
+};
+FluidRegions fluidRegions(const CartesianBackground& bg, const CellGroups& groups, const CutCellGeometry* cut);
+
 }  // namespace parcelflow::cfd

@@ -7,6 +7,7 @@
 #include "config_error.hpp"
 #include "internal_error.hpp"
 #include "mesh_builder.hpp"
+#include "number_text.hpp"
 
 namespace parcelflow::cfd {
 
@@ -71,6 +72,7 @@ void GasSolver::setupBoundaries() {
   if (!haveOutlet)
     throw ConfigError("case.yaml: boundaries: at least one patch must be a pressure_outlet "
                       "(it fixes the pressure level and lets the gas leave)");
+  checkEveryRegionHasAnOutlet();
   int tangentialPlate = -1;  // a distributor patch whose velocity is not normal to one of its faces here
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     const auto& pc = patch_[m.boundaryPatch(b)];
@@ -91,6 +93,30 @@ void GasSolver::setupBoundaries() {
   if (tangentialPlate >= 0)
     throw ConfigError("case.yaml: boundaries." + m.patchNames()[tangentialPlate] +
                       ".superficial_velocity: a distributor plate needs a velocity normal to its faces");
+}
+
+void GasSolver::checkEveryRegionHasAnOutlet() const {
+  const Mesh& m = *mesh_;
+  std::vector<int> reached(m.nFluidRegions(), 0);
+  for (int b = 0; b < m.nBoundaryFaces(); ++b)
+    if (patch_[m.boundaryPatch(b)].type == BoundaryType::PressureOutlet) reached[m.fluidRegion(m.boundaryCell(b))] = 1;
+  MPI_Allreduce(MPI_IN_PLACE, reached.data(), static_cast<int>(reached.size()), MPI_INT, MPI_MAX, m.comm());
+  long pockets = 0, pocketCells = 0;
+  int first = -1;
+  for (int r = 0; r < m.nFluidRegions(); ++r)
+    if (!reached[r]) {
+      ++pockets;
+      pocketCells += m.fluidRegionCells(r);
+      if (first < 0) first = r;
+    }
+  if (first < 0) return;
+  const Vec3& x = m.fluidRegionPoint(first);
+  throw ConfigError("case.yaml: geometry: " + std::to_string(m.fluidRegionCells(first)) + " fluid cell(s) from " +
+                    formatNumbers("(%g, %g, %g)", x[0], x[1], x[2]) + " on share no open face with the fluid that reaches a pressure_outlet (" +
+                    std::to_string(pockets) + " such pocket(s), " + std::to_string(pocketCells) +
+                    " cells; cells touching only along an edge or at a corner are apart): the gas pressure "
+                    "there has no level. Fill the pocket in the geometry, join it through a face, or give "
+                    "it an outlet");
 }
 
 void GasSolver::setupInletRegions() {

@@ -99,6 +99,8 @@ class GasSolver {
   };
 
   void setupBoundaries();
+  // Stops with a ConfigError when a face-connected fluid region has no pressure-outlet face.
+  void checkEveryRegionHasAnOutlet() const;
   void setupInletRegions();
   // Inlet fluxes and sources at time t: each rises linearly from 0 over its ramp_time.
   void applyInletRamps(double t);

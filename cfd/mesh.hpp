@@ -47,6 +47,12 @@ class Mesh {
   // Global fluid-cell id (ordered like the background's linear index of the cell or its master), the
   // same on every rank count.
   long globalId(int cell) const { return globalId_[cell]; }
+  // Face-connected fluid regions (cell_groups.hpp): the region of a local cell, their number, and per
+  // region its cell count and the centre of its lowest-id cell's background box (for messages).
+  int fluidRegion(int cell) const { return fluidRegion_[cell]; }
+  int nFluidRegions() const { return static_cast<int>(fluidRegionCells_.size()); }
+  long fluidRegionCells(int region) const { return fluidRegionCells_[region]; }
+  const Vec3& fluidRegionPoint(int region) const { return fluidRegionPoint_[region]; }
   // The background cell of a cell (of a merged cell: its master's).
   long backgroundIndex(int cell) const { return backgroundIndex_[cell]; }
   const Vec3& cellCentre(int cell) const { return cellCentre_[cell]; }
@@ -95,6 +101,9 @@ class Mesh {
   int nOwned_ = 0;
   long nGlobal_ = 0, mergedCells_ = 0, unmergedSmallCells_ = 0;
   std::vector<long> globalId_, backgroundIndex_;
+  std::vector<int> fluidRegion_;
+  std::vector<long> fluidRegionCells_;
+  std::vector<Vec3> fluidRegionPoint_;
   std::vector<Vec3> cellCentre_;
   std::vector<double> cellVolume_;
   std::vector<int> faceOwner_, faceNeighbour_;

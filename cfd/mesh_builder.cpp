@@ -86,8 +86,15 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   if (allHave < 1.0) throw ConfigError("the partition left an MPI rank without cells: use fewer ranks");
 
   addGhostLayers(mesh, groups, settings.ghostLayers);
+  const FluidRegions regions = fluidRegions(bg, groups, cut ? &*cut : nullptr);
+  mesh.fluidRegionCells_ = regions.cells;
+  for (long g : regions.firstGlobal) {
+    const auto ijk = bg.ijk(groups.backgroundOfGlobal[g]);
+    mesh.fluidRegionPoint_.push_back(bg.centre(ijk[0], ijk[1], ijk[2]));
+  }
   mesh.backgroundToLocal_.assign(nBg, -1);
   for (int c = 0; c < mesh.nLocalCells(); ++c) {
+    mesh.fluidRegion_.push_back(regions.ofGlobal[mesh.globalId_[c]]);
     const auto& members = groups.members[mesh.globalId_[c]];
     for (long member : members) mesh.backgroundToLocal_[member] = c;
     const long b = members.front();

@@ -297,3 +297,33 @@ TEST(GasConfig, PatchesAreCheckedAgainstTheMesh) {
   GasSolver gas(GasConfig(YAML::Load(kValid)).settings(), MPI_COMM_WORLD);
   EXPECT_GT(gas.mesh().nGlobalCells(), 0);
 }
+
+// A fluid region with no face to the fluid that reaches a pressure outlet has no pressure level: refused
+// with the pocket's size and place, on staircase and cut cells (a hollow shell of solid in a box of fluid
+// around a fluid core; cells 0.1 m, the shell two cells thick).
+TEST(GasConfig, EnclosedPocketsAreRefused) {
+  auto pocketCase = [](const std::string& walls) {
+    return "mesh: {origin: [0, 0, 0], lengths: [1, 1, 1], cells: [10, 10, 10], walls: " + walls + "}\n"
+           "geometry:\n"
+           "  - shape: {box: {min: [0, 0, 0], max: [1, 1, 1]}}\n"
+           "  - {op: cut, shape: {box: {min: [0.2, 0.2, 0.2], max: [0.8, 0.8, 0.8]}}}\n"
+           "  - shape: {box: {min: [0.4, 0.4, 0.4], max: [0.6, 0.6, 0.6]}}\n"
+           "gas: {density: 1.2, viscosity: 1.8e-5}\n"
+           "boundaries: {zmax: {type: pressure_outlet}, zmin: {type: wall}, xmin: {type: wall}, xmax: {type: wall},"
+           " ymin: {type: wall}, ymax: {type: wall}, walls: {type: wall}}\n";
+  };
+  for (const std::string walls : {"staircase", "cut_cells"}) {
+    try {
+      GasSolver gas(GasConfig(YAML::Load(pocketCase(walls))).settings(), MPI_COMM_WORLD);
+      ADD_FAILURE() << walls << ": expected ConfigError";
+    } catch (const ConfigError& e) {
+      expectError(e.what(), {"geometry", "8 fluid cell(s) from (0.45, 0.45, 0.45)", "1 such pocket(s), 8 cells",
+                             "pressure_outlet"});
+    }
+  }
+  // The same box without the core: one region, reached by the outlet.
+  std::string open = pocketCase("cut_cells");
+  open.erase(open.find("  - shape: {box: {min: [0.4"), std::string("  - shape: {box: {min: [0.4, 0.4, 0.4], max: [0.6, 0.6, 0.6]}}\n").size());
+  GasSolver gas(GasConfig(YAML::Load(open)).settings(), MPI_COMM_WORLD);
+  EXPECT_EQ(gas.mesh().nFluidRegions(), 1);
+}
