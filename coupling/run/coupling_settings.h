@@ -59,7 +59,7 @@ struct CouplingSettings {
   FilteredDragSettings filtered_drag;
   KernelSettings kernel;
   double gas_fraction_floor = 0.35;  // a_g is never below this; every hit is counted and reported
-  std::string excess_solids = "discard";  // solids above 1 - floor: "discard" (cut by the floor) or "spill"
+  std::string excess_solids = "spill";  // solids above 1 - floor: "spill" (to the neighbours) or "discard" (cut)
   GuardSettings guards;
 };
 
