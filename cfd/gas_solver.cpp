@@ -111,8 +111,9 @@ void GasSolver::checkEveryRegionHasAnOutlet() const {
     }
   if (first < 0) return;
   const Vec3& x = m.fluidRegionPoint(first);
-  throw ConfigError("case.yaml: geometry: " + std::to_string(m.fluidRegionCells(first)) + " fluid cell(s) from " +
-                    formatNumbers("(%g, %g, %g)", x[0], x[1], x[2]) + " on share no open face with the fluid that reaches a pressure_outlet (" +
+  throw ConfigError("case.yaml: geometry: " + std::to_string(m.fluidRegionCells(first)) + " fluid cell(s), the first at " +
+                    formatNumbers("(%g, %g, %g)", x[0], x[1], x[2]) +
+                    ", share no open face with the fluid that reaches a pressure_outlet (" +
                     std::to_string(pockets) + " such pocket(s), " + std::to_string(pocketCells) +
                     " cells; cells touching only along an edge or at a corner are apart): the gas pressure "
                     "there has no level. Fill the pocket in the geometry, join it through a face, or give "

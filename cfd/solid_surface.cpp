@@ -14,11 +14,11 @@ struct SolidSurface::InsideTest {
 };
 
 std::shared_ptr<const SolidSurface> SolidSurface::fromStl(const std::string& path, const std::string& key) {
-  return std::make_shared<const SolidSurface>(readStlSurface(path, key), path);
+  return std::make_shared<const SolidSurface>(readStlSurface(path, key));
 }
 
-SolidSurface::SolidSurface(TriangleSurface surface, std::string file)
-    : surface_(std::move(surface)), file_(std::move(file)), inside_(std::make_unique<InsideTest>(surface_)) {
+SolidSurface::SolidSurface(TriangleSurface surface)
+    : surface_(std::move(surface)), inside_(std::make_unique<InsideTest>(surface_)) {
   lo_ = hi_ = surface_.points.front();
   for (const auto& p : surface_.points) {
     lo_ = lo_.cwiseMin(p);

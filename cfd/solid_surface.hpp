@@ -14,21 +14,19 @@ class SolidSurface {
  public:
   // Reads and checks `path` (stl_reader.hpp); `key` names the setting in messages.
   static std::shared_ptr<const SolidSurface> fromStl(const std::string& path, const std::string& key);
-  explicit SolidSurface(TriangleSurface surface, std::string file);
+  explicit SolidSurface(TriangleSurface surface);
   ~SolidSurface();
   SolidSurface(const SolidSurface&) = delete;
   SolidSurface& operator=(const SolidSurface&) = delete;
 
   bool contains(const Vec3& x) const;
   const TriangleSurface& triangles() const { return surface_; }
-  const std::string& file() const { return file_; }
   const Vec3& lo() const { return lo_; }  // bounding box
   const Vec3& hi() const { return hi_; }
 
  private:
   struct InsideTest;
   TriangleSurface surface_;
-  std::string file_;
   Vec3 lo_, hi_;
   std::unique_ptr<InsideTest> inside_;
 };

@@ -317,7 +317,7 @@ TEST(GasConfig, EnclosedPocketsAreRefused) {
       GasSolver gas(GasConfig(YAML::Load(pocketCase(walls))).settings(), MPI_COMM_WORLD);
       ADD_FAILURE() << walls << ": expected ConfigError";
     } catch (const ConfigError& e) {
-      expectError(e.what(), {"geometry", "8 fluid cell(s) from (0.45, 0.45, 0.45)", "1 such pocket(s), 8 cells",
+      expectError(e.what(), {"geometry", "8 fluid cell(s), the first at (0.45, 0.45, 0.45), share", "1 such pocket(s), 8 cells",
                              "pressure_outlet"});
     }
   }
