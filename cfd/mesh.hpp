@@ -55,6 +55,11 @@ class Mesh {
   const Vec3& fluidRegionPoint(int region) const { return fluidRegionPoint_[region]; }
   // The background cell of a cell (of a merged cell: its master's).
   long backgroundIndex(int cell) const { return backgroundIndex_[cell]; }
+  // The background cells a cell is made of (one; several where small cut cells were merged into it, the
+  // master first) and the fluid share of each (1 off the walls and on a staircase).
+  int nMembers(int cell) const { return memberStart_[cell + 1] - memberStart_[cell]; }
+  long member(int cell, int m) const { return memberBackground_[memberStart_[cell] + m]; }
+  double memberFluidFraction(int cell, int m) const { return memberFraction_[memberStart_[cell] + m]; }
   const Vec3& cellCentre(int cell) const { return cellCentre_[cell]; }
   double cellVolume(int cell) const { return cellVolume_[cell]; }
 
@@ -101,6 +106,9 @@ class Mesh {
   int nOwned_ = 0;
   long nGlobal_ = 0, mergedCells_ = 0, unmergedSmallCells_ = 0;
   std::vector<long> globalId_, backgroundIndex_;
+  std::vector<int> memberStart_{0};
+  std::vector<long> memberBackground_;
+  std::vector<double> memberFraction_;
   std::vector<int> fluidRegion_;
   std::vector<long> fluidRegionCells_;
   std::vector<Vec3> fluidRegionPoint_;

@@ -96,7 +96,12 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   for (int c = 0; c < mesh.nLocalCells(); ++c) {
     mesh.fluidRegion_.push_back(regions.ofGlobal[mesh.globalId_[c]]);
     const auto& members = groups.members[mesh.globalId_[c]];
-    for (long member : members) mesh.backgroundToLocal_[member] = c;
+    for (long member : members) {
+      mesh.backgroundToLocal_[member] = c;
+      mesh.memberBackground_.push_back(member);
+      mesh.memberFraction_.push_back(cut ? cut->fluidFraction(member) : 1.0);
+    }
+    mesh.memberStart_.push_back(static_cast<int>(mesh.memberBackground_.size()));
     const long b = members.front();
     mesh.backgroundIndex_.push_back(b);
     const auto ijk = bg.ijk(b);

@@ -9,6 +9,7 @@
 #include "cfd/config_error.hpp"
 #include "cfd/number_text.hpp"
 #include "contact_time_check.h"
+#include "domain.h"
 #include "lammps.h"
 #include "liggghts_instance.h"
 #include "script_error_report.h"
@@ -88,6 +89,11 @@ void DemEngine::start(const std::string& restart_file) {
 }
 
 long DemEngine::step() const { return static_cast<long>(lammps_->lammps()->update->ntimestep); }
+
+std::array<bool, 3> DemEngine::periodicAxes() const {
+  const int* periodic = lammps_->lammps()->domain->periodicity;
+  return {periodic[0] != 0, periodic[1] != 0, periodic[2] != 0};
+}
 
 void DemEngine::advance(int steps) { lammps_->quietCommand("run " + std::to_string(steps) + " pre no post no"); }
 

@@ -12,6 +12,7 @@
 
 #include <mpi.h>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -38,6 +39,8 @@ class DemEngine {
   DemParcels& parcels() { return *parcels_; }
   const DemParcels& parcels() const { return *parcels_; }
   long step() const;  // LIGGGHTS' time step counter
+  // Whether the script's box is periodic along x, y, z (its `boundary` command).
+  std::array<bool, 3> periodicAxes() const;
 
   void advance(int steps);  // `run steps pre no post no`, LIGGGHTS' per-chunk output filtered
   // LIGGGHTS write_restart of all parcels with their columns, the contact history and the forces the next

@@ -199,11 +199,6 @@ CaseDefinition readCase(const std::string& case_folder) {
   c.settings = readCouplingSettings(root);
   c.gas = cfd::GasConfig(root, case_folder).settings();
   checkFilteredDragAgainstGas(c.settings.coupling, c.gas.gas);
-  // The transfer kernels know background cells, not cut cells merged with their neighbours (issue 31, part 3).
-  if (c.gas.mesh.walls == cfd::WallRepresentation::CutCells)
-    throw ConfigError("mesh.walls", "cut_cells",
-                      "staircase in a coupled run (cut cells are for the gas solver alone until parcels find "
-                      "their cut cells: cfd/README.md, \"Cut cells in the solver\")");
   const std::string script = case_folder + "/" + c.settings.liggghts.script;
   if (!std::filesystem::is_regular_file(script) || !std::ifstream(script))
     throw ConfigError("liggghts.script", c.settings.liggghts.script,

@@ -28,6 +28,7 @@
 #include "progress_line.h"
 #include "run_counters.h"
 #include "run_warnings.h"
+#include "side_walls.h"
 #include "cfd/number_text.hpp"
 #include "stop_signal.h"
 #include "time_averages.h"
@@ -150,8 +151,9 @@ void CoupledRun::initialize() {
   if (cs.monitors.has_bed_pressure_drop)
     PlaneAverages(mesh, {cs.monitors.bed_pressure_drop[0], cs.monitors.bed_pressure_drop[1]},
                   "monitors.bed_pressure_drop");
-  std::vector<long> owned(mesh.nOwnedCells());
-  for (int c = 0; c < mesh.nOwnedCells(); ++c) owned[c] = mesh.backgroundIndex(c);
+  std::vector<OwnedPiece> owned;
+  for (int c = 0; c < mesh.nOwnedCells(); ++c)
+    for (int m = 0; m < mesh.nMembers(c); ++m) owned.push_back({mesh.member(c, m), c, mesh.memberFluidFraction(c, m)});
   s.owners = std::make_unique<CellOwnerMap>(MPI_COMM_WORLD, mesh.background().size(), owned);
   BackgroundGrid grid;
   for (int d = 0; d < 3; ++d) {
@@ -191,6 +193,8 @@ void CoupledRun::initialize() {
   kernel_reach.spills_excess = s.spill_excess_solids;
   kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
                                             grid.spacing[2] * grid.cells[2]});
+  kernel_reach.side_wall_area_per_volume =
+      sideWallAreaPerVolume(mesh, s.case_def.gas.boundaries, s.case_def.gas.gas.gravity, s.dem->periodicAxes());
   const cfd::LinearSolverSettings& pressure = s.case_def.gas.solver.pressure;
   const std::string pressure_stop_rule =
       pressure.criterion == cfd::StoppingCriterion::Strict

@@ -24,16 +24,22 @@ ParcelMeshCoupler::ParcelMeshCoupler(const BackgroundGrid& grid, const CellOwner
       drag_(std::move(drag)),
       limits_(limits),
       gas_(gas),
-      cell_volume_(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]),
       uses_mean_diameter_(usesMeanDiameter(drag_)),
       kernel_reads_diameters_(std::visit([](const auto& k) { return k.readsDiameter(); }, kernel_)),
-      fluid_(grid, [&](int i, int j, int k) { return owners.ownerRank(backgroundCell(i, j, k)) >= 0; }) {
+      fluid_(grid, [&](int i, int j, int k) { return owners.fluidFraction(backgroundCell(i, j, k)); }) {
   grid_.validate();
   int rank = 0;
   MPI_Comm_rank(owners.comm(), &rank);
-  n_owned_ = 0;
-  for (long c = 0; c < owners.backgroundSize(); ++c)
-    if (owners.ownerRank(c) == rank) ++n_owned_;
+  // An owned gas cell's fluid volume: the shares of the background cells it is made of.
+  const double box_volume = grid.spacing[0] * grid.spacing[1] * grid.spacing[2];
+  for (long c = 0; c < owners.backgroundSize(); ++c) {
+    if (owners.ownerRank(c) != rank) continue;
+    const std::size_t owned = static_cast<std::size_t>(owners.ownerIndex(c));
+    if (owned >= owned_volume_.size()) owned_volume_.resize(owned + 1, 0.0);
+    owned_volume_[owned] += owners.fluidFraction(c) * box_volume;
+  }
+  n_owned_ = static_cast<int>(owned_volume_.size());
+  for (double v : owned_volume_) PARCELFLOW_ASSERT(v > 0.0, "ParcelMeshCoupler: an owned cell has no background cell");
 }
 
 TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
@@ -49,6 +55,7 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   // rank's parcels' neighbourhood, so it is about the cells the stencils touch.
   touched_.clear();
   box_of_touched_.clear();
+  touched_fraction_.clear();
   const auto& lo = stencils_.lo;
   for (int k = lo[2]; k < lo[2] + stencils_.cells[2]; ++k)
     for (int j = lo[1]; j < lo[1] + stencils_.cells[1]; ++j)
@@ -56,6 +63,7 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
         if (fluid_.isFluid(i, j, k)) {
           touched_.push_back(backgroundCell(i, j, k));
           box_of_touched_.push_back(stencils_.boxIndex(i, j, k));
+          touched_fraction_.push_back(fluid_.fluidFraction(i, j, k));
         }
   exchange_.setCells(touched_);
   return stats;
@@ -68,8 +76,10 @@ void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, i
   deposit(stencils_, width, per_parcel.data(), on_box.data());
   std::vector<double>& on_touched = scratch_.on_touched;
   on_touched.resize(touched_.size() * width);
+  // a cell cut by a wall takes its fluid share of what the window put on the whole cell
   for (std::size_t t = 0; t < touched_.size(); ++t)
-    for (int m = 0; m < width; ++m) on_touched[width * t + m] = on_box[width * box_of_touched_[t] + m];
+    for (int m = 0; m < width; ++m)
+      on_touched[width * t + m] = touched_fraction_[t] * on_box[width * box_of_touched_[t] + m];
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
   exchange_.sumToOwners(on_touched, width, owned);
 }
@@ -82,7 +92,8 @@ void ParcelMeshCoupler::gatherFromOwned(const std::vector<double>& owned, int wi
   std::vector<double>& on_box = scratch_.on_box;
   on_box.assign(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
   for (std::size_t t = 0; t < touched_.size(); ++t)
-    for (int m = 0; m < width; ++m) on_box[width * box_of_touched_[t] + m] = on_touched[width * t + m];
+    for (int m = 0; m < width; ++m)
+      on_box[width * box_of_touched_[t] + m] = touched_fraction_[t] * on_touched[width * t + m];
   at_parcels.resize(parcels_.size * width);
   gather(stencils_, width, on_box.data(), at_parcels.data(), orphan_value);
 }
@@ -98,7 +109,7 @@ void ParcelMeshCoupler::depositSolids(std::vector<double>& owned_solid_fraction)
   }
   depositToOwners(moments, width, owned_moments_);
   owned_solid_fraction.resize(n_owned_);
-  for (int c = 0; c < n_owned_; ++c) owned_solid_fraction[c] = owned_moments_[width * c] / cell_volume_;
+  for (int c = 0; c < n_owned_; ++c) owned_solid_fraction[c] = owned_moments_[width * c] / owned_volume_[c];
 }
 
 DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fraction,
@@ -155,8 +166,8 @@ DragStats ParcelMeshCoupler::computeDrag(const std::vector<double>& owned_gas_fr
   solids.beta.resize(n_owned_);
   solids.beta_us.resize(3 * static_cast<std::size_t>(n_owned_));
   for (int c = 0; c < n_owned_; ++c) {
-    solids.beta[c] = deposited[4 * c] / cell_volume_;
-    for (int d = 0; d < 3; ++d) solids.beta_us[3 * c + d] = deposited[4 * c + 1 + d] / cell_volume_;
+    solids.beta[c] = deposited[4 * c] / owned_volume_[c];
+    for (int d = 0; d < 3; ++d) solids.beta_us[3 * c + d] = deposited[4 * c + 1 + d] / owned_volume_[c];
   }
   return stats;
 }

@@ -2,8 +2,10 @@
 //
 // Parcels live where LIGGGHTS' decomposition puts them, gas cells where METIS puts them. Each rank
 // deposits on the box of background cells its parcels' kernel windows span, and CellExchange sums the
-// box's fluid cells into the owning ranks (and fetches owned gas values back over the same pattern). Weights are renormalised over all fluid cells of the stencil (a cell is fluid if it has an
-// owner anywhere), so deposited volume and momentum are conserved exactly, at walls and across ranks.
+// box's fluid cells into the owning ranks (and fetches owned gas values back over the same pattern). Weights
+// are renormalised over all fluid cells of the stencil (a cell is fluid if it has an owner anywhere), each
+// counted with its fluid share where a wall cuts it, so deposited volume and momentum are conserved exactly,
+// at walls, in cut and merged cells and across ranks; a solids fraction is over the gas cell's fluid volume.
 //
 // One step: beginStep(parcels) -> depositSolids -> computeDrag -> (gas advances) -> gatherGas.
 // beginStep computes every parcel's stencil once (box_stencils.hpp: separable windows on the box of
@@ -75,7 +77,8 @@ class ParcelMeshCoupler {
   void gatherGas(const std::vector<double>& owned_velocity, const std::vector<double>& owned_grad_p,
                  GasAtParcels& at_parcels);
 
-  double cellVolume() const { return cell_volume_; }
+  // The fluid volume of owned cell c (the background cell's volume off the walls).
+  double ownedCellVolume(int c) const { return owned_volume_[c]; }
 
  private:
   // `width` values per parcel -> their kernel-weighted sums on the owned cells.
@@ -93,7 +96,7 @@ class ParcelMeshCoupler {
   DragLaw drag_;
   DragLimits limits_;
   GasProperties gas_;
-  double cell_volume_;
+  std::vector<double> owned_volume_;  // per owned cell: its fluid volume
   int n_owned_;
   bool uses_mean_diameter_;           // the drag law reads the local Sauter mean
   bool kernel_reads_diameters_;       // the kernel widens for large parcels (coupling.kernel.parcel_scale)
@@ -106,6 +109,7 @@ class ParcelMeshCoupler {
   BoxStencils stencils_;                // this step's stencils
   std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
   std::vector<long> box_of_touched_;    // their box index
+  std::vector<double> touched_fraction_;  // their fluid share (below 1 where a wall cuts them)
 
   // Work arrays of the transfers, kept from step to step so that a coupling step allocates nothing once
   // they have grown to the largest batch and box.

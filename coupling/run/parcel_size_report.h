@@ -12,6 +12,7 @@ namespace parcelflow::coupling {
 struct ParcelSizes {
   double largest_diameter = 0.0;  // collision diameter D = dp np^(1/3) [m]
   double largest_np = 0.0;        // real particles per parcel
+  double largest_excess = 0.0;    // D - dp: how much wider than its particles a parcel is [m]
 };
 
 struct KernelReach {
@@ -20,6 +21,7 @@ struct KernelReach {
   double narrowest_extent = 0.0;  // the gas box's smallest length [m]
   double smoothing_length = 0.0;  // coupling.kernel.smoothing_length [m]
   bool spills_excess = false;     // coupling.excess_solids: spill (the floor keeps the solids volume)
+  double side_wall_area_per_volume = 0.0;  // side_walls.h [1/m]
 };
 
 // Parcels wider than the kernel length, with the kernel not widened for them: the gas-fraction floor hits
@@ -39,6 +41,14 @@ constexpr double kSmoothingLengthOverDiameter = 0.5;
 // parcels pack looser at the walls than the beads they stand for (solids volume of the wall cells 0.78
 // of the middle cells', the beads' 0.93).
 constexpr double kParcelsAcrossTheNarrowestExtent = 6.0;
+// The share of the bed in the parcels' looser wall layer, (D - d) times the side-wall area per gas volume
+// (side_walls.h). In the 75 mm fluidized bed (cases/coarse_graining/fluidized/README.md) the exact sphere
+// volume in the cells along the walls was 0.563 of the cell for np 8, 0.522 for np 27, 0.608 for the beads
+// (0.65-0.66 inside for all), and the walls raised U_mf over the beads' by 6.7-11.2 % more than in the same bed
+// with periodic sides (np 8 at share 0.133: +9.5 % against +2.8 %; np 27 at 0.267: +23.5 against +12.3 %;
+// 5 mm parcels at 0.187: +34.2 against +27.5 %); np 8 in the 20 mm fluidized column (0.2): +17.7 % with walls,
+// within 5 % without. U_mf rose by 0.36-0.89 times the share: 0.05 keeps it within about 5 %.
+constexpr double kWallLayerShare = 0.05;
 
 // Lines to print: one describing the parcels (only when some parcel holds more than one particle), then one
 // warning per limit broken. Empty for a bed of single particles.

@@ -46,14 +46,16 @@ void RunWarnings::checkOutsideMesh(const ParcelBatch& batch, const std::vector<l
 }
 
 void RunWarnings::reportParcelSizes(const ParcelBatch& batch) {
-  double largest[2] = {0.0, 0.0};  // D, np
+  double largest[3] = {0.0, 0.0, 0.0};  // D, np, D - dp
   for (std::size_t p = 0; p < batch.size; ++p) {
-    largest[0] = std::max(largest[0], batch.dp[p] * std::cbrt(batch.np[p]));
+    const double D = batch.dp[p] * std::cbrt(batch.np[p]);
+    largest[0] = std::max(largest[0], D);
     largest[1] = std::max(largest[1], batch.np[p]);
+    largest[2] = std::max(largest[2], D - batch.dp[p]);
   }
-  MPI_Allreduce(MPI_IN_PLACE, largest, 2, MPI_DOUBLE, MPI_MAX, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, largest, 3, MPI_DOUBLE, MPI_MAX, comm_);
   if (rank_ != 0) return;
-  for (const std::string& line : parcelSizeReport({largest[0], largest[1]}, kernel_reach_))
+  for (const std::string& line : parcelSizeReport({largest[0], largest[1], largest[2]}, kernel_reach_))
     std::printf("%s\n", line.c_str());
 }
 

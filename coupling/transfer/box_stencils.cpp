@@ -9,31 +9,31 @@ namespace parcelflow::coupling {
 
 void FluidCells::buildTable() {
   const std::size_t sx = cells_[0] + 1, sy = cells_[1] + 1;
-  nonFluidBelow_.assign(sx * sy * (cells_[2] + 1), 0);
-  auto at = [&](int i, int j, int k) -> long& { return nonFluidBelow_[(k * sy + j) * sx + i]; };
+  notWholeBelow_.assign(sx * sy * (cells_[2] + 1), 0);
+  auto at = [&](int i, int j, int k) -> long& { return notWholeBelow_[(k * sy + j) * sx + i]; };
   for (int k = 0; k < cells_[2]; ++k)
     for (int j = 0; j < cells_[1]; ++j)
       for (int i = 0; i < cells_[0]; ++i)
-        at(i + 1, j + 1, k + 1) = (isFluid(i, j, k) ? 0 : 1) + at(i, j + 1, k + 1) + at(i + 1, j, k + 1) +
+        at(i + 1, j + 1, k + 1) = (kind_[index(i, j, k)] == kWhole ? 0 : 1) + at(i, j + 1, k + 1) + at(i + 1, j, k + 1) +
                                   at(i + 1, j + 1, k) - at(i, j, k + 1) - at(i, j + 1, k) - at(i + 1, j, k) +
                                   at(i, j, k);
 }
 
-bool FluidCells::allFluid(const Window& w) const {
+bool FluidCells::allWhole(const Window& w) const {
   const std::size_t sx = cells_[0] + 1, sy = cells_[1] + 1;
-  auto at = [&](int i, int j, int k) { return nonFluidBelow_[(k * sy + j) * sx + i]; };
+  auto at = [&](int i, int j, int k) { return notWholeBelow_[(k * sy + j) * sx + i]; };
   const int i0 = w.lo[0], j0 = w.lo[1], k0 = w.lo[2];
   const int i1 = i0 + w.n[0], j1 = j0 + w.n[1], k1 = k0 + w.n[2];
-  const long nonFluid = at(i1, j1, k1) - at(i0, j1, k1) - at(i1, j0, k1) - at(i1, j1, k0) + at(i0, j0, k1) +
+  const long notWhole = at(i1, j1, k1) - at(i0, j1, k1) - at(i1, j0, k1) - at(i1, j1, k0) + at(i0, j0, k1) +
                         at(i0, j1, k0) + at(i1, j0, k0) - at(i0, j0, k0);
-  return nonFluid == 0;
+  return notWhole == 0;
 }
 
 namespace {
 
-// Sum of the window's weights over its fluid cells (0 if it has none).
+// Sum of the window's weights times the cells' fluid shares (0 if it has no fluid cell).
 double fluidSum(const Window& w, const FluidCells& fluid) {
-  if (fluid.allFluid(w)) {
+  if (fluid.allWhole(w)) {
     double s[3] = {0.0, 0.0, 0.0};
     for (int d = 0; d < 3; ++d)
       for (int a = 0; a < w.n[d]; ++a) s[d] += w.f[d][a];
@@ -43,7 +43,7 @@ double fluidSum(const Window& w, const FluidCells& fluid) {
   for (int c = 0; c < w.n[2]; ++c)
     for (int b = 0; b < w.n[1]; ++b)
       for (int a = 0; a < w.n[0]; ++a)
-        if (fluid.isFluid(w.lo[0] + a, w.lo[1] + b, w.lo[2] + c)) sum += w.f[0][a] * w.f[1][b] * w.f[2][c];
+        sum += fluid.fluidFraction(w.lo[0] + a, w.lo[1] + b, w.lo[2] + c) * w.f[0][a] * w.f[1][b] * w.f[2][c];
   return sum;
 }
 

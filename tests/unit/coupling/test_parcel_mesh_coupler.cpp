@@ -82,7 +82,8 @@ TEST_P(Conservation, VolumeDragAndMomentumReachTheOwnersExactly) {
   coupler.depositSolids(solid_fraction);
   double parcel_volume = 0.0, cell_volume = 0.0;
   for (std::size_t p = 0; p < parcels.dp.size(); ++p) parcel_volume += parcels.np[p] * kPi / 6 * std::pow(parcels.dp[p], 3);
-  for (double a : solid_fraction) cell_volume += a * coupler.cellVolume();
+  for (std::size_t c = 0; c < solid_fraction.size(); ++c)
+    cell_volume += solid_fraction[c] * coupler.ownedCellVolume(static_cast<int>(c));
   const double volume_error = std::abs(sumAll(cell_volume) / sumAll(parcel_volume) - 1.0);
 
   // Uniform gas: the gathered a_g and u must be exactly the cell values (weights sum to 1).
@@ -99,8 +100,8 @@ TEST_P(Conservation, VolumeDragAndMomentumReachTheOwnersExactly) {
     max_gather_error = std::max(max_gather_error, std::abs(at_parcels.gas_fraction[p] - 0.6));
   }
   for (std::size_t c = 0; c < s.owned.size(); ++c) {
-    beta += solids.beta[c] * coupler.cellVolume();
-    for (int d = 0; d < 3; ++d) beta_us[d] += solids.beta_us[3 * c + d] * coupler.cellVolume();
+    beta += solids.beta[c] * coupler.ownedCellVolume(static_cast<int>(c));
+    for (int d = 0; d < 3; ++d) beta_us[d] += solids.beta_us[3 * c + d] * coupler.ownedCellVolume(static_cast<int>(c));
   }
   const double kappa_error = std::abs(sumAll(beta) / sumAll(kappa) - 1.0);
   double momentum_error = 0.0;

@@ -56,3 +56,25 @@ TEST(ParcelSizeReport, AWidenedKernelAndAWideBedAreWithinTheLimits) {
   // np 8 parcels of 3 mm (the np8 bed's small class alone): D/h = 0.72, 5 across: only the second limit
   EXPECT_EQ(pc::parcelSizeReport({0.003, 8.0}, kGoldschmidt).size(), 2u);
 }
+
+TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
+  // the 75 mm fluidized bed (cases/coarse_graining/fluidized): 3.26 mm cells, four side walls, 4 / 0.075 m2 per m3
+  pc::KernelReach bed{0.075 / 23, 0.0, 0.075};
+  bed.spills_excess = true;
+  bed.side_wall_area_per_volume = 4.0 / 0.075;
+  // np 8: 5 mm parcels of 2.5 mm beads, share 4 x 2.5 / 75 = 0.133
+  const auto lines = pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_TRUE(mentions(lines[0], "wall layer share (D - d) x side-wall area / gas volume = 0.133")) << lines[0];
+  EXPECT_TRUE(mentions(lines[1], "share 0.133 of the bed (limit 0.05)")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "D - d = 2.5 mm")) << lines[1];
+  // the same parcels in a 0.3 m bed: share 0.033, only the description
+  bed.side_wall_area_per_volume = 4.0 / 0.3;
+  bed.narrowest_extent = 0.3;
+  EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed).size(), 1u);
+  // periodic sides (no side wall counted): no share in the description
+  bed.side_wall_area_per_volume = 0.0;
+  const auto periodic = pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed);
+  ASSERT_EQ(periodic.size(), 1u);
+  EXPECT_FALSE(mentions(periodic[0], "wall layer")) << periodic[0];
+}
