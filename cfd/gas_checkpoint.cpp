@@ -1,6 +1,10 @@
 #include "gas_checkpoint.hpp"
 
+#include <cmath>
+#include <limits>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "config_error.hpp"
 #include "hdf5_file.hpp"
@@ -19,6 +23,41 @@ long long direction(const Vec3& area) {
 
 long long pairKey(long long a, long long b, long long n) { return a * n + b; }
 
+// Face values by key (a face's two cells, or a boundary face's cell). One key can hold several faces (a merged
+// cut cell's two faces to one neighbour; a cell's wall and box sides): their centres tell them apart, the
+// nearest one, since two builds of a cut-cell mesh can differ in the last bits (gas_checkpoint.hpp). Files
+// written before the centres were stored key boundary faces by cell and axis direction, one face per key.
+class FaceValues {
+ public:
+  void add(long long key, const Vec3& centre, double value) { byKey_[key].push_back({centre, value}); }
+  // The value of the face of `key` whose centre is nearest to `centre`; false when the key is absent.
+  bool find(long long key, const Vec3& centre, double& value) const {
+    const auto it = byKey_.find(key);
+    if (it == byKey_.end()) return false;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& [at, v] : it->second) {
+      const double distance = std::isnan(at[0]) ? 0.0 : (at - centre).squaredNorm();
+      if (distance < best) {
+        best = distance;
+        value = v;
+      }
+    }
+    return true;
+  }
+
+ private:
+  std::unordered_map<long long, std::vector<std::pair<Vec3, double>>> byKey_;
+};
+
+// Rows of 3 doubles, or NaN centres for a file without the dataset.
+std::vector<Vec3> centresOf(const Hdf5Reader& file, const std::string& name, std::size_t rows) {
+  std::vector<Vec3> centres(rows, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  if (!file.hasDataset(name)) return centres;
+  const std::vector<double> xyz = file.doubles(name);
+  for (std::size_t r = 0; r < rows && 3 * r + 2 < xyz.size(); ++r) centres[r] = Vec3(xyz[3 * r], xyz[3 * r + 1], xyz[3 * r + 2]);
+  return centres;
+}
+
 }  // namespace
 
 void writeGasCheckpoint(const GasSolver& gas, const std::string& path, const std::string& checkpoint_id) {
@@ -35,17 +74,19 @@ void writeGasCheckpoint(const GasSolver& gas, const std::string& path, const std
     }
   }
   std::vector<long long> faces;
-  std::vector<double> phi;
+  std::vector<double> phi, faceCentres, boundaryCentres;
   for (int f = 0; f < m.nInternalFaces(); ++f)
     if (m.faceOwner(f) < n) {
       faces.insert(faces.end(), {m.globalId(m.faceOwner(f)), m.globalId(m.faceNeighbour(f))});
       phi.push_back(s.phi[f]);
+      faceCentres.insert(faceCentres.end(), m.faceCentre(f).data(), m.faceCentre(f).data() + 3);
     }
   std::vector<long long> boundary;
   std::vector<double> phiB;
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     boundary.insert(boundary.end(), {m.globalId(m.boundaryCell(b)), direction(m.boundaryArea(b))});
     phiB.push_back(s.phiBoundary[b]);
+    boundaryCentres.insert(boundaryCentres.end(), m.boundaryCentre(b).data(), m.boundaryCentre(b).data() + 3);
   }
   const long nFaces = static_cast<long>(phi.size()), nBoundary = static_cast<long>(phiB.size());
   const long cellOffset = rowOffset(n, m.comm()), faceOffset = rowOffset(nFaces, m.comm()),
@@ -65,8 +106,10 @@ void writeGasCheckpoint(const GasSolver& gas, const std::string& path, const std
   file.write("grad_p_rgh", gradPRgh.data(), total, cellOffset, n, 3);
   file.write("face_cells", faces.data(), totalFaces, faceOffset, nFaces, 2);
   file.write("phi", phi.data(), totalFaces, faceOffset, nFaces, 1);
+  file.write("face_centre", faceCentres.data(), totalFaces, faceOffset, nFaces, 3);
   file.write("boundary_key", boundary.data(), totalBoundary, boundaryOffset, nBoundary, 2);
   file.write("phi_b", phiB.data(), totalBoundary, boundaryOffset, nBoundary, 1);
+  file.write("boundary_centre", boundaryCentres.data(), totalBoundary, boundaryOffset, nBoundary, 3);
   file.close();
 }
 
@@ -106,26 +149,28 @@ void readGasCheckpoint(GasSolver& gas, const std::string& path, const std::strin
 
   const std::vector<long long> faces = file.integers("face_cells");
   const std::vector<double> phi = file.doubles("phi");
-  std::unordered_map<long long, double> phiOfFace;
-  for (std::size_t r = 0; r < phi.size(); ++r) phiOfFace[pairKey(faces[2 * r], faces[2 * r + 1], total)] = phi[r];
-  for (int f = 0; f < m.nInternalFaces(); ++f) {
-    const auto it = phiOfFace.find(pairKey(m.globalId(m.faceOwner(f)), m.globalId(m.faceNeighbour(f)), total));
-    if (it == phiOfFace.end())
+  const std::vector<Vec3> faceCentres = centresOf(file, "face_centre", phi.size());
+  FaceValues phiOfFace;
+  for (std::size_t r = 0; r < phi.size(); ++r)
+    phiOfFace.add(pairKey(faces[2 * r], faces[2 * r + 1], total), faceCentres[r], phi[r]);
+  for (int f = 0; f < m.nInternalFaces(); ++f)
+    if (!phiOfFace.find(pairKey(m.globalId(m.faceOwner(f)), m.globalId(m.faceNeighbour(f)), total), m.faceCentre(f),
+                        s.phi[f]))
       ++missing;
-    else
-      s.phi[f] = it->second;
-  }
   const std::vector<long long> boundary = file.integers("boundary_key");
   const std::vector<double> phiB = file.doubles("phi_b");
-  std::unordered_map<long long, double> phiOfBoundary;
-  for (std::size_t r = 0; r < phiB.size(); ++r) phiOfBoundary[boundary[2 * r] * 6 + boundary[2 * r + 1]] = phiB[r];
-  for (int b = 0; b < m.nBoundaryFaces(); ++b) {
-    const auto it = phiOfBoundary.find(m.globalId(m.boundaryCell(b)) * 6 + direction(m.boundaryArea(b)));
-    if (it == phiOfBoundary.end())
+  const std::vector<Vec3> boundaryCentres = centresOf(file, "boundary_centre", phiB.size());
+  // With centres a boundary face is found by its cell and centre alone: a cut wall facing 45 degrees between
+  // two axes has no direction that survives round-off.
+  const bool byCentre = file.hasDataset("boundary_centre");
+  const auto boundaryKey = [&](long long cell, long long axisDirection) { return byCentre ? cell : cell * 6 + axisDirection; };
+  FaceValues phiOfBoundary;
+  for (std::size_t r = 0; r < phiB.size(); ++r)
+    phiOfBoundary.add(boundaryKey(boundary[2 * r], boundary[2 * r + 1]), boundaryCentres[r], phiB[r]);
+  for (int b = 0; b < m.nBoundaryFaces(); ++b)
+    if (!phiOfBoundary.find(boundaryKey(m.globalId(m.boundaryCell(b)), direction(m.boundaryArea(b))),
+                            m.boundaryCentre(b), s.phiBoundary[b]))
       ++missing;
-    else
-      s.phiBoundary[b] = it->second;
-  }
   const double missingGlobal = m.sum(missing);
   if (missingGlobal > 0.0)
     throw ConfigError(path, std::to_string(static_cast<long>(missingGlobal)) + " cells and faces of this mesh missing",

@@ -170,6 +170,8 @@ std::vector<long long> Hdf5Reader::integers(const std::string& name) const {
   return readAll<long long>(id_, name, H5T_NATIVE_LLONG, path_);
 }
 
+bool Hdf5Reader::hasDataset(const std::string& name) const { return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0; }
+
 std::string Hdf5Reader::textAttribute(const std::string& name) const {
   const hid_t attr = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
   check(attr >= 0, "opening attribute " + name, path_);

@@ -91,6 +91,7 @@ class Hdf5Reader {
 
   std::vector<double> doubles(const std::string& name) const;  // a whole dataset, row-major
   std::vector<long long> integers(const std::string& name) const;
+  bool hasDataset(const std::string& name) const;
   std::string textAttribute(const std::string& name) const;
   double numberAttribute(const std::string& name) const;
 

@@ -1,7 +1,9 @@
 // The gas part of a checkpoint (cfd/gas_checkpoint.hpp): a solver restored from the file has exactly the
 // state of the one that wrote it, and the next step of both is the same to the last bit (the writer builds
 // a new pressure preconditioner too, as the coupled loop makes it); a file of another checkpoint is refused
-// naming checkpoint_id. On 1, 2 and 3 ranks.
+// naming checkpoint_id. On 1, 2 and 3 ranks. (Boundary faces are found by their cell and centre: the box's
+// corner cells have two and three.) Cut-cell meshes are not covered: two builds of one differ in the last bits
+// and sometimes by a sliver face (cfd/gas_checkpoint.hpp), so their continuation cannot be compared bit for bit.
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <unistd.h>
