@@ -9,12 +9,12 @@
 #include <random>
 
 #include "parcel_mesh_coupler.h"
+#include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 struct LShapedDomain {
   pc::BackgroundGrid grid;
@@ -59,12 +59,6 @@ struct Parcels {
   pc::ParcelBatch batch() const { return {dp.size(), x.data(), v.data(), dp.data(), np.data()}; }
 };
 
-double sumAll(double local) {
-  double total = 0.0;
-  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  return total;
-}
-
 }  // namespace
 
 class Conservation : public ::testing::TestWithParam<const char*> {};
@@ -76,51 +70,17 @@ TEST_P(Conservation, VolumeDragAndMomentumReachTheOwnersExactly) {
                                 pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   const Parcels parcels(s, 400);
   const pc::TransferStats stats = coupler.beginStep(parcels.batch());
-  EXPECT_EQ(sumAll(static_cast<double>(stats.orphans)), 0.0);
+  EXPECT_EQ(pc::test::sumOverRanks(static_cast<double>(stats.orphans)), 0.0);
 
-  std::vector<double> solid_fraction;
-  coupler.depositSolids(solid_fraction);
-  double parcel_volume = 0.0, cell_volume = 0.0;
-  for (std::size_t p = 0; p < parcels.dp.size(); ++p) parcel_volume += parcels.np[p] * kPi / 6 * std::pow(parcels.dp[p], 3);
-  for (std::size_t c = 0; c < solid_fraction.size(); ++c)
-    cell_volume += solid_fraction[c] * coupler.ownedCellVolume(static_cast<int>(c));
-  const double volume_error = std::abs(sumAll(cell_volume) / sumAll(parcel_volume) - 1.0);
-
-  // Uniform gas: the gathered a_g and u must be exactly the cell values (weights sum to 1).
-  const std::vector<double> gas_fraction(s.owned.size(), 0.6);
-  std::vector<double> velocity;
-  for (std::size_t c = 0; c < s.owned.size(); ++c) velocity.insert(velocity.end(), {0.1, -0.2, 0.8});
-  pc::SolidsOnCells solids;
-  pc::GasAtParcels at_parcels;
-  coupler.computeDrag(gas_fraction, velocity, solids, at_parcels);
-  double kappa = 0.0, kappa_v[3] = {0, 0, 0}, beta = 0.0, beta_us[3] = {0, 0, 0}, max_gather_error = 0.0;
-  for (std::size_t p = 0; p < parcels.dp.size(); ++p) {
-    kappa += at_parcels.kappa[p];
-    for (int d = 0; d < 3; ++d) kappa_v[d] += at_parcels.kappa[p] * parcels.v[3 * p + d];
-    max_gather_error = std::max(max_gather_error, std::abs(at_parcels.gas_fraction[p] - 0.6));
-  }
-  for (std::size_t c = 0; c < s.owned.size(); ++c) {
-    beta += solids.beta[c] * coupler.ownedCellVolume(static_cast<int>(c));
-    for (int d = 0; d < 3; ++d) beta_us[d] += solids.beta_us[3 * c + d] * coupler.ownedCellVolume(static_cast<int>(c));
-  }
-  const double kappa_error = std::abs(sumAll(beta) / sumAll(kappa) - 1.0);
-  double momentum_error = 0.0;
-  for (int d = 0; d < 3; ++d)
-    momentum_error = std::max(momentum_error, std::abs(sumAll(beta_us[d]) - sumAll(kappa_v[d])) / sumAll(kappa));
-
-  coupler.gatherGas(velocity, velocity, at_parcels);
-  for (std::size_t p = 0; p < parcels.dp.size(); ++p)
-    for (int d = 0; d < 3; ++d)
-      max_gather_error = std::max(max_gather_error, std::abs(at_parcels.gas_velocity[3 * p + d] - velocity[d]));
-
+  const pc::test::ConservationErrors e = pc::test::transferConservation(coupler, parcels.batch(), s.owned.size());
   if (s.rank == 0)
     std::printf("[%s kernel, %d rank(s)] relative errors: volume %.2e, kappa %.2e, momentum %.2e; "
                 "max gather error of a uniform field %.2e\n",
-                GetParam(), s.nranks, volume_error, kappa_error, momentum_error, max_gather_error);
-  EXPECT_LT(volume_error, 1e-12);
-  EXPECT_LT(kappa_error, 1e-12);
-  EXPECT_LT(momentum_error, 1e-12);
-  EXPECT_LT(max_gather_error, 1e-14);
+                GetParam(), s.nranks, e.volume, e.kappa, e.momentum, e.gather);
+  EXPECT_LT(e.volume, 1e-12);
+  EXPECT_LT(e.kappa, 1e-12);
+  EXPECT_LT(e.momentum, 1e-12);
+  EXPECT_LT(e.gather, 1e-14);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, Conservation, ::testing::Values("gaussian", "centroid"));

@@ -4,18 +4,13 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include "cfd/mesh_builder.hpp"
+#include "tests/unit/coupling/box_mesh.hpp"
 #include "side_walls.h"
 
 using namespace parcelflow;
 
 namespace {
-cfd::Mesh boxMesh() {
-  cfd::MeshSettings s;
-  s.lengths = cfd::Vec3(0.3, 0.2, 0.5);
-  s.cells = {3, 2, 5};
-  return cfd::MeshBuilder::build(s, cfd::Geometry(), MPI_COMM_WORLD);
-}
+using coupling::test::boxMesh;
 
 std::vector<cfd::BoundarySettings> boundaries(cfd::BoundaryType sides) {
   std::vector<cfd::BoundarySettings> b;
