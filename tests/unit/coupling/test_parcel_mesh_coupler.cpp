@@ -15,7 +15,6 @@ namespace pc = parcelflow::coupling;
 
 namespace {
 
-
 struct LShapedDomain {
   pc::BackgroundGrid grid;
   int rank = 0, nranks = 1;
