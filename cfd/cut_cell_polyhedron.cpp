@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>  // cross products
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace parcelflow::cfd {
 
@@ -48,6 +49,41 @@ bool CoplanarSurfaceIndex::onSurface(int axis, int plane, const Vec3& point) con
   return false;
 }
 
+namespace {
+
+bool lexicographicallyLess(const Vec3& a, const Vec3& b) {
+  return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+}
+
+// The clipped piece's triangles in an order and with a first corner that depend on their coordinates only:
+// CGAL's corefinement orders its work by the addresses of its boxes (ID_FROM_BOX_ADDRESS), so two clips of
+// one cell give the same triangles in another order, and sums over them would differ in the last bits
+// between two builds of one mesh (and a restarted run would not continue bit for bit).
+std::vector<std::array<Vec3, 3>> canonicalTriangles(const cgal::Mesh& clipped) {
+  std::vector<std::array<Vec3, 3>> triangles;
+  triangles.reserve(clipped.number_of_faces());
+  for (auto f : clipped.faces()) {
+    std::array<Vec3, 3> p;
+    int n = 0;
+    for (auto v : CGAL::vertices_around_face(clipped.halfedge(f), clipped)) p[n++] = cgal::toVec3(clipped.point(v));
+    // the smallest corner first, the orientation kept
+    const int first = lexicographicallyLess(p[1], p[0]) ? (lexicographicallyLess(p[2], p[1]) ? 2 : 1)
+                                                         : (lexicographicallyLess(p[2], p[0]) ? 2 : 0);
+    std::rotate(p.begin(), p.begin() + first, p.end());
+    triangles.push_back(p);
+  }
+  std::sort(triangles.begin(), triangles.end(), [](const auto& a, const auto& b) {
+    for (int v = 0; v < 3; ++v) {
+      if (lexicographicallyLess(a[v], b[v])) return true;
+      if (lexicographicallyLess(b[v], a[v])) return false;
+    }
+    return false;
+  });
+  return triangles;
+}
+
+}  // namespace
+
 CutCellMeasure measureCutCell(const cgal::Mesh& clipped, const Vec3& lo, const Vec3& hi,
                               const std::array<int, 3>& ijk, const std::array<bool, 6>& onBackgroundBoundary,
                               const CoplanarSurfaceIndex& coplanar) {
@@ -58,10 +94,7 @@ CutCellMeasure measureCutCell(const cgal::Mesh& clipped, const Vec3& lo, const V
   Vec3 wallMoment = Vec3::Zero();
   std::array<Vec3, 6> openMoment;
   openMoment.fill(Vec3::Zero());
-  for (auto f : clipped.faces()) {
-    std::array<Vec3, 3> p;
-    int n = 0;
-    for (auto v : CGAL::vertices_around_face(clipped.halfedge(f), clipped)) p[n++] = cgal::toVec3(clipped.point(v));
+  for (const std::array<Vec3, 3>& p : canonicalTriangles(clipped)) {
     // Volume relative to the cell's lower corner: small terms, no cancellation of large coordinates.
     // Each face spans a tetrahedron with lo: volume det/6, centroid lo + (sum of the corners - lo)/4.
     const double det = (p[0] - lo).dot((p[1] - lo).cross(p[2] - lo));

@@ -24,8 +24,7 @@ long long direction(const Vec3& area) {
 long long pairKey(long long a, long long b, long long n) { return a * n + b; }
 
 // Face values by key (a face's two cells, or a boundary face's cell). One key can hold several faces (a merged
-// cut cell's two faces to one neighbour; a cell's wall and box sides): their centres tell them apart, the
-// nearest one, since two builds of a cut-cell mesh can differ in the last bits (gas_checkpoint.hpp). Files
+// cut cell's two faces to one neighbour; a cell's wall and box sides): their centres tell them apart. Files
 // written before the centres were stored key boundary faces by cell and axis direction, one face per key.
 class FaceValues {
  public:
@@ -160,8 +159,8 @@ void readGasCheckpoint(GasSolver& gas, const std::string& path, const std::strin
   const std::vector<long long> boundary = file.integers("boundary_key");
   const std::vector<double> phiB = file.doubles("phi_b");
   const std::vector<Vec3> boundaryCentres = centresOf(file, "boundary_centre", phiB.size());
-  // With centres a boundary face is found by its cell and centre alone: a cut wall facing 45 degrees between
-  // two axes has no direction that survives round-off.
+  // With centres a boundary face is found by its cell and centre alone: the axis direction of a cut wall facing
+  // 45 degrees between two axes is decided by round-off.
   const bool byCentre = file.hasDataset("boundary_centre");
   const auto boundaryKey = [&](long long cell, long long axisDirection) { return byCentre ? cell : cell * 6 + axisDirection; };
   FaceValues phiOfBoundary;

@@ -4,14 +4,9 @@
 // /face_cells (the global ids of owner and neighbour, owner < neighbour) and /phi, written by the rank that
 // owns the owner cell, with /face_centre. Boundary faces: /boundary_key (global cell id, outward axis
 // direction 0..5), /boundary_centre and /phi_b. A face is found by its cells (boundary: its cell) and the
-// nearest centre, which tells a merged cut cell's faces to one neighbour apart and survives the last-bit
-// differences of two builds of one cut-cell mesh (CGAL's corefinement orders its work by the addresses of
-// its boxes, ID_FROM_BOX_ADDRESS, so a few cut cells' volumes and centroids differ by 1e-16 between builds:
-// a cut-cell run continues from its checkpoint to round-off, not bit for bit; and a sliver face of 1e-17 of a
-// cell can exist in one build and not the other: one the restarting build has and the file lacks stops the
-// restart (exit 2, "cells and faces of this mesh missing"), one the file has and the build lacks is dropped.
-// Storing the cut geometry in the checkpoint is the fix, not done yet). Files without the centres (older
-// ones) are read by cell pairs and, for boundary faces, axis direction.
+// nearest centre, which tells a merged cut cell's two faces to one neighbour apart and does not depend on the
+// axis direction of a cut wall facing 45 degrees between two axes. Files without the centres (older ones) are
+// read by cell pairs and, for boundary faces, axis direction.
 // Root attributes: checkpoint_id, time, global_cells.
 #include <string>
 
