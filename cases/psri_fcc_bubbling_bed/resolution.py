@@ -10,6 +10,8 @@ and four variants that each change one thing:
                as the reduced case scaled the full case's 5,000 N/m at 15 mm), DEM step 2e-4 s (the contact time
                scales with D), skin and reinjection interval likewise
   wall_return  the return region at the wall, 0.35 < r < 0.44 m (a dipleg-like annulus) instead of r < 0.2 m
+  cut_cells    the column, exit tube and sparger region on cut cells instead of the staircase (issue 31; the box's
+               side patches then have no face)
 Each runs in RUNS/VARIANT/run on --ranks ranks with checkpoints every 5 s; calling the script again continues
 an unfinished run from its last checkpoint and skips a finished one, so the set can be spread over sessions.
 `--summary` only tabulates what has finished (RUNS/resolution.csv) and plots every dp/(g dz) profile with the
@@ -67,8 +69,14 @@ def wall_return(case):
     case["liggghts"]["variables"].update(return_r="0.44", return_rin="0.35")
 
 
+def cut_cells(case):
+    case["mesh"]["walls"] = "cut_cells"
+    for side in ("xmin", "xmax", "ymin", "ymax"):
+        case["boundaries"].pop(side, None)
+
+
 VARIANTS = {"baseline": [], "mesh_50mm": [mesh_50mm], "filter_2x": [filter_2x], "parcels_24mm": [parcels_24mm],
-            "wall_return": [wall_return]}
+            "wall_return": [wall_return], "cut_cells": [cut_cells]}
 
 
 def prepare(root, name, end):

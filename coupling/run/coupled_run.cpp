@@ -203,7 +203,8 @@ void CoupledRun::initialize() {
           : "solver.pressure.tolerance = " + cfd::shortNumber(pressure.tolerance) +
                 " of the through-flow (criterion normalized): the step's continuity error was that small already";
   s.warnings = std::make_unique<RunWarnings>(MPI_COMM_WORLD, mesh, *s.owners, s.loop.initial_parcels,
-                                             pressure_stop_rule, kernel_reach);
+                                             pressure_stop_rule, kernel_reach,
+                                             s.case_def.gas.geometry.items().empty() ? nullptr : &s.case_def.gas.geometry);
   s.guard = std::make_unique<BlowupGuard>(MPI_COMM_WORLD, cs.coupling.guards, s.loop.initial_parcels);
   s.loop.next_checkpoint = cs.output.checkpoint_interval;  // the other output times start at 0
   if (!checkpoint) clearEarlierRun(s.output.string(), MPI_COMM_WORLD);
