@@ -53,7 +53,8 @@ std::vector<Vec3> centresOf(const Hdf5Reader& file, const std::string& name, std
   std::vector<Vec3> centres(rows, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
   if (!file.hasDataset(name)) return centres;
   const std::vector<double> xyz = file.doubles(name);
-  for (std::size_t r = 0; r < rows && 3 * r + 2 < xyz.size(); ++r) centres[r] = Vec3(xyz[3 * r], xyz[3 * r + 1], xyz[3 * r + 2]);
+  for (std::size_t r = 0; r < rows && 3 * r + 2 < xyz.size(); ++r)
+    centres[r] = Vec3(xyz[3 * r], xyz[3 * r + 1], xyz[3 * r + 2]);
   return centres;
 }
 
@@ -162,7 +163,9 @@ void readGasCheckpoint(GasSolver& gas, const std::string& path, const std::strin
   // With centres a boundary face is found by its cell and centre alone: the axis direction of a cut wall facing
   // 45 degrees between two axes is decided by round-off.
   const bool byCentre = file.hasDataset("boundary_centre");
-  const auto boundaryKey = [&](long long cell, long long axisDirection) { return byCentre ? cell : cell * 6 + axisDirection; };
+  const auto boundaryKey = [&](long long cell, long long axisDirection) {
+    return byCentre ? cell : cell * 6 + axisDirection;
+  };
   FaceValues phiOfBoundary;
   for (std::size_t r = 0; r < phiB.size(); ++r)
     phiOfBoundary.add(boundaryKey(boundary[2 * r], boundary[2 * r + 1]), boundaryCentres[r], phiB[r]);

@@ -19,7 +19,8 @@ double sideWallAreaPerVolume(const cfd::Mesh& mesh, const std::vector<cfd::Bound
     const cfd::Vec3 n = mesh.boundaryArea(b) / mesh.boundaryMagArea(b);
     if (g > 0.0 && std::abs(n.dot(gravity)) >= 0.5 * g) continue;  // a floor or a roof
     bool through_periodic_face = false;
-    for (int d = 0; d < 3; ++d) through_periodic_face = through_periodic_face || (dem_periodic[d] && std::abs(n[d]) > 0.99);
+    for (int d = 0; d < 3; ++d)
+      through_periodic_face = through_periodic_face || (dem_periodic[d] && std::abs(n[d]) > 0.99);
     if (!through_periodic_face) area += mesh.boundaryMagArea(b);
   }
   double volume = 0.0;

@@ -5,8 +5,8 @@
 //
 // Stored in separable form on a box of background cells, the bounding box of the batch's windows:
 // per parcel its Window, whose z factors carry the renormalisation 1 / (sum over the window's cells of
-// weight times fluid share), and the box index of its first cell. Box arrays hold `ncomp` values per box cell, x fastest,
-// so each window row is contiguous: no per-cell index is stored or looked up (a Gaussian R = 2 stencil
+// weight times fluid share), and the box index of its first cell. Box arrays hold `ncomp` values per box
+// cell, x fastest, so each window row is contiguous: no per-cell index is stored or looked up (a Gaussian R = 2 stencil
 // is 27 factors instead of 125 (cell, weight) pairs). Non-fluid box cells: a deposit there is
 // discarded and a gather must read 0 there. A cell cut by a wall takes its fluid share f of what lands on
 // it (the caller multiplies the box value by f both ways: deposit and gather); the weights times the
