@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -53,17 +54,30 @@ void setCoupling(GasSolver& gas, double t) {
   gas.setDragSource(betaUs);
 }
 
-std::string sharedTempFile() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  char path[] = "/tmp/pf_gas_checkpoint_XXXXXX";
-  if (rank == 0) {
-    const int fd = mkstemp(path);
-    close(fd);
+// A temporary file of rank 0's, its name on every rank; removed when the test ends, also by a failure that
+// throws (every rank leaves the test together: the checkpoint calls are collective).
+class SharedTempFile {
+ public:
+  SharedTempFile() {
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    char path[] = "/tmp/pf_gas_checkpoint_XXXXXX";
+    if (rank_ == 0) {
+      const int fd = mkstemp(path);
+      close(fd);
+    }
+    MPI_Bcast(path, sizeof path, MPI_CHAR, 0, MPI_COMM_WORLD);
+    path_ = path;
   }
-  MPI_Bcast(path, sizeof path, MPI_CHAR, 0, MPI_COMM_WORLD);
-  return path;
-}
+  ~SharedTempFile() {
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (rank_ == 0) std::remove(path_.c_str());
+  }
+  const std::string& path() const { return path_; }
+
+ private:
+  int rank_ = 0;
+  std::string path_;
+};
 
 template <class Field>
 void expectSame(const Field& a, const Field& b, std::size_t n, const char* what) {
@@ -83,7 +97,8 @@ TEST_P(GasCheckpoint, RestoredSolverContinuesBitForBit) {
     writer.advance(dt);
   }
   if (settings.mesh.walls == WallRepresentation::CutCells) ASSERT_GT(writer.mesh().mergedCells(), 0);
-  const std::string path = sharedTempFile();
+  const SharedTempFile file;
+  const std::string& path = file.path();
   writeGasCheckpoint(writer, path, "5-test");
   writer.rebuildPreconditionerNextStep();
 
@@ -115,10 +130,6 @@ TEST_P(GasCheckpoint, RestoredSolverContinuesBitForBit) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("checkpoint_id"), std::string::npos) << e.what();
   }
-  MPI_Barrier(MPI_COMM_WORLD);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0) std::remove(path.c_str());
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, GasCheckpoint, ::testing::Values(kCase, kCutPipe));
