@@ -34,7 +34,6 @@ class CellOwnerMap {
     const auto cut = cut_fraction_.find(background_cell);
     return cut == cut_fraction_.end() ? 1.0 : cut->second;
   }
-  bool hasCutCells() const { return !cut_fraction_.empty(); }
   long backgroundSize() const { return static_cast<long>(owner_rank_.size()); }
   MPI_Comm comm() const { return comm_; }
 

@@ -14,9 +14,9 @@ void FluidCells::buildTable() {
   for (int k = 0; k < cells_[2]; ++k)
     for (int j = 0; j < cells_[1]; ++j)
       for (int i = 0; i < cells_[0]; ++i)
-        at(i + 1, j + 1, k + 1) = (kind_[index(i, j, k)] == kWhole ? 0 : 1) + at(i, j + 1, k + 1) + at(i + 1, j, k + 1) +
-                                  at(i + 1, j + 1, k) - at(i, j, k + 1) - at(i, j + 1, k) - at(i + 1, j, k) +
-                                  at(i, j, k);
+        at(i + 1, j + 1, k + 1) = (kind_[index(i, j, k)] == kWhole ? 0 : 1) + at(i, j + 1, k + 1) +
+                                  at(i + 1, j, k + 1) + at(i + 1, j + 1, k) - at(i, j, k + 1) - at(i, j + 1, k) -
+                                  at(i + 1, j, k) + at(i, j, k);
 }
 
 bool FluidCells::allWhole(const Window& w) const {

@@ -75,7 +75,10 @@ TEST_P(CutCellTransfer, ConservesVolumeDragAndMomentumInFluidVolume) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), piecesOf(mesh));
-  ASSERT_TRUE(owners.hasCutCells());
+  long cut = 0;  // background cells the wall cuts, as the owner map reports them
+  for (long b = 0; b < owners.backgroundSize(); ++b)
+    cut += owners.fluidFraction(b) > 0.0 && owners.fluidFraction(b) < 1.0;
+  ASSERT_GT(cut, 0);
   pc::ParcelMeshCoupler coupler(gridOf(mesh), owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
                                 pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   for (int c = 0; c < mesh.nOwnedCells(); ++c) ASSERT_DOUBLE_EQ(coupler.ownedCellVolume(c), mesh.cellVolume(c)) << c;
