@@ -1,7 +1,7 @@
 #pragma once
 // The cells of the gas mesh as groups of background cells. Without cut cells every fluid background
 // cell is a group of its own. With cut cells a small cut cell (fluid fraction below
-// smallCellFraction) is merged into its face neighbour across its largest open face among the
+// `mesh.small_cell_fraction`, default 1 %) is merged into its face neighbour across its largest open face among the
 // neighbours that are not small themselves (the master): the gas cell is their union. Tiny cells
 // would otherwise keep fluid centroids a round-off away from their faces (a fraction of 2e-13 put one
 // outside its cell, 2e-17 blew the pipe flow up; cfd/README.md, "Cut cells in the solver").
@@ -13,9 +13,6 @@
 
 namespace parcelflow::cfd {
 
-// MFiX removes cut cells under 1 % of the volume; here they are merged, so no volume is lost.
-constexpr double smallCellFraction = 0.01;
-
 struct CellGroups {
   std::vector<int> globalOfBackground;     // per background cell: its group's global id, -1 if solid
   std::vector<long> backgroundOfGlobal;    // per group: the master's background index (ids in its order)
@@ -26,7 +23,7 @@ struct CellGroups {
 
 // `fluid[b]`: whether background cell b holds fluid; `cut`: the cut-cell geometry or null (staircase).
 CellGroups groupCells(const CartesianBackground& bg, const std::vector<bool>& fluid, const CutCellGeometry* cut,
-                      double smallFraction = smallCellFraction);
+                      double smallFraction);
 
 // The groups' face-connected fluid regions (joined through faces with open area; cells touching only
 // along an edge or at a corner are apart): a region that no pressure outlet reaches has no pressure level.

@@ -44,7 +44,7 @@ GasConfig::GasConfig(const YAML::Node& root, const std::string& caseFolder)
 }
 
 MeshSettings GasConfig::readMesh(const YamlSection& s) const {
-  s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights", "walls"});
+  s.allowOnly({"origin", "lengths", "cells", "ghost_layers", "partition_weights", "walls", "small_cell_fraction"});
   MeshSettings m;
   // Up to 10 km, far beyond any apparatus: at 1e300 m the first pressure solve did no iteration and the
   // run went on until the blow-up guard stopped it (the coordinates lose all precision).
@@ -60,6 +60,11 @@ MeshSettings GasConfig::readMesh(const YamlSection& s) const {
   m.ghostLayers = s.integer("ghost_layers", 2, 1, 5);
   m.walls = s.word("walls", "staircase", {"staircase", "cut_cells"}) == "cut_cells" ? WallRepresentation::CutCells
                                                                                    : WallRepresentation::Staircase;
+  // Below 1e-3 a cell's fluid centroid can lie a round-off from its faces (cfd/README.md, "Cut cells in the
+  // solver"); above one half a cell that is mostly fluid would be merged.
+  m.smallCellFraction = s.number("small_cell_fraction", kDefaultSmallCellFraction, Range::closed(1e-3, 0.5));
+  if (s.has("small_cell_fraction") && m.walls != WallRepresentation::CutCells)
+    s.fail("small_cell_fraction", "applies only with walls: cut_cells (staircase meshes have no cut cells)");
   if (s.has("partition_weights")) {
     for (const auto& item : s.listOfMaps("partition_weights")) {
       item.allowOnly({"region", "weight"});

@@ -20,6 +20,10 @@ struct PartitionWeight {
 // solver").
 enum class WallRepresentation { Staircase, CutCells };
 
+// MFiX removes cut cells under 1 % of the volume; here they are merged into a neighbour (cell_groups.hpp),
+// so no volume is lost. case.yaml: mesh.small_cell_fraction.
+constexpr double kDefaultSmallCellFraction = 0.01;
+
 struct MeshSettings {
   Vec3 origin = Vec3::Zero();
   Vec3 lengths = Vec3::Ones();
@@ -27,6 +31,7 @@ struct MeshSettings {
   int ghostLayers = 2;
   std::vector<PartitionWeight> partitionWeights;  // later entries override earlier ones
   WallRepresentation walls = WallRepresentation::Staircase;
+  double smallCellFraction = kDefaultSmallCellFraction;  // cut cells below this share of a cell are merged
 };
 
 struct GasProperties {

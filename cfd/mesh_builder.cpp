@@ -42,7 +42,7 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
     const auto ijk = bg.ijk(b);
     fluid[b] = cut ? cut->fluidFraction(b) > 0.0 : geometry.isFluid(bg.centre(ijk[0], ijk[1], ijk[2]));
   }
-  const CellGroups groups = groupCells(bg, fluid, cut ? &*cut : nullptr);
+  const CellGroups groups = groupCells(bg, fluid, cut ? &*cut : nullptr, settings.smallCellFraction);
   const auto& globalOfBackground = groups.globalOfBackground;
   const int nGlobal = static_cast<int>(groups.backgroundOfGlobal.size());
   if (nGlobal == 0) throw ConfigError("case.yaml: geometry: selects no fluid cell of the mesh");

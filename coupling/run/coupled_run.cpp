@@ -226,14 +226,22 @@ void CoupledRun::initialize() {
   // MPI's profiling hook: a no-op unless a PMPI tool listens (tests/regression/scaling counts the loop's
   // traffic between the two calls).
   MPI_Pcontrol(1);
+  const bool cutCells = s.case_def.gas.mesh.walls == cfd::WallRepresentation::CutCells;
   if (s.rank == 0)
-    std::printf("parcelflow: %ld parcels, %ld gas cells, gas step %g s = %d DEM steps, drag %s, kernel %s; "
+    std::printf("parcelflow: %ld parcels, %ld gas cells%s, gas step %g s = %d DEM steps, drag %s, kernel %s; "
                 "output in %s%s\n",
-                s.dem->parcels().globalCount(), mesh.nGlobalCells(), cs.time.gas_step, s.dem_steps,
-                cs.coupling.drag.c_str(), cs.coupling.kernel.type.c_str(), s.output.c_str(),
+                s.dem->parcels().globalCount(), mesh.nGlobalCells(),
+                cutCells ? (" (cut cells; " + std::to_string(mesh.mergedCells()) + " small ones merged)").c_str() : "",
+                cs.time.gas_step, s.dem_steps, cs.coupling.drag.c_str(), cs.coupling.kernel.type.c_str(),
+                s.output.c_str(),
                 checkpoint ? (" (continuing checkpoint " + checkpoint->id + " at t = " +
                               std::to_string(s.loop.time) + " s)").c_str()
                            : "");
+  if (s.rank == 0 && mesh.unmergedSmallCells() > 0)
+    std::printf("parcelflow: warning: %ld cut cells under mesh.small_cell_fraction %g share no open face with a "
+                "larger cell and stay alone: small cells slow the pressure solve and their centroids lie close to "
+                "their faces; a finer mesh or a smoother geometry there avoids them\n",
+                mesh.unmergedSmallCells(), s.case_def.gas.mesh.smallCellFraction);
 }
 
 bool CoupledRun::advance() {

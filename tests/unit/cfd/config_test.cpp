@@ -92,6 +92,9 @@ TEST(GasConfig, ValidFileParses) {
   EXPECT_EQ(s.mesh.cells[2], 20);
   EXPECT_EQ(s.mesh.ghostLayers, 3);
   EXPECT_EQ(s.mesh.walls, WallRepresentation::Staircase);  // the default
+  EXPECT_EQ(s.mesh.smallCellFraction, kDefaultSmallCellFraction);
+  const GasConfig cut(YAML::Load(replaced("  ghost_layers: 3", "  ghost_layers: 3\n  walls: cut_cells\n  small_cell_fraction: 0.05")));
+  EXPECT_EQ(cut.settings().mesh.smallCellFraction, 0.05);
   EXPECT_EQ(s.mesh.partitionWeights.size(), 1u);
   EXPECT_EQ(s.geometry.items().size(), 3u);
   EXPECT_DOUBLE_EQ(s.gas.viscosity, 1.8e-5);
@@ -172,6 +175,10 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
               {"mesh.ghost_layers = 0", "[1, 5]"});
   expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layers: 3\n  walls: cut")),
               {"mesh.walls = cut", "staircase, cut_cells"});
+  expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layers: 3\n  walls: cut_cells\n  small_cell_fraction: 0.6")),
+              {"mesh.small_cell_fraction = 0.6", "[0.001, 0.5]"});
+  expectError(errorOf(replaced("  ghost_layers: 3", "  ghost_layers: 3\n  small_cell_fraction: 0.05")),
+              {"mesh.small_cell_fraction", "only with walls: cut_cells"});
   expectError(errorOf(replaced("  convection: upwind", "  convection: quick")),
               {"solver.convection = quick", "upwind, limited_linear_upwind"});
   expectError(errorOf(replaced("type: velocity_inlet,", "type: inlet,")),

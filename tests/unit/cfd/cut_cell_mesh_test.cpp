@@ -106,7 +106,7 @@ TEST(CutCellMesh, SmallCellsMergedIntoANeighbour) {
     volume += m.cellVolume(c);
     smallest = std::min(smallest, m.cellVolume(c) / cellVolume);
   }
-  EXPECT_GE(-m.max(-smallest), smallCellFraction);
+  EXPECT_GE(-m.max(-smallest), kDefaultSmallCellFraction);
   const double surfaceVolume = surfaceOfGeometry(geometry, m.background()).volume();
   EXPECT_NEAR(m.sum(volume) / surfaceVolume, 1.0, 1e-10);
 
@@ -132,4 +132,26 @@ TEST(CutCellMesh, SmallCellsMergedIntoANeighbour) {
   if (master >= 0) {
     EXPECT_EQ(m.backgroundIndex(master), m.background().index(21, 12, 0));
   }
+}
+
+// mesh.small_cell_fraction: the same pipe with cut cells under 5 % merged: more cells merged, none
+// smaller, the volume kept.
+TEST(CutCellMesh, SmallCellFractionSetsTheMergeThreshold) {
+  MeshSettings settings;
+  settings.origin = Vec3(-0.6, -0.6, 0.0);
+  settings.lengths = Vec3(1.2, 1.2, 0.1);
+  settings.cells = {24, 24, 1};
+  settings.walls = WallRepresentation::CutCells;
+  settings.smallCellFraction = 0.05;
+  const Geometry geometry({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.5 + 5e-11, 0, 0.1), ""}});
+  const Mesh m = MeshBuilder::build(settings, geometry, MPI_COMM_WORLD);
+  EXPECT_GT(m.mergedCells(), 12);  // 12 at the default 1 %
+  EXPECT_EQ(m.unmergedSmallCells(), 0);
+  double volume = 0, smallest = 1;
+  for (int c = 0; c < m.nOwnedCells(); ++c) {
+    volume += m.cellVolume(c);
+    smallest = std::min(smallest, m.cellVolume(c) / m.background().cellVolume());
+  }
+  EXPECT_GE(-m.max(-smallest), 0.05);
+  EXPECT_NEAR(m.sum(volume) / surfaceOfGeometry(geometry, m.background()).volume(), 1.0, 1e-10);
 }

@@ -96,7 +96,9 @@ TEST_P(GasCheckpoint, RestoredSolverContinuesBitForBit) {
     setCoupling(writer, step * dt);
     writer.advance(dt);
   }
-  if (settings.mesh.walls == WallRepresentation::CutCells) ASSERT_GT(writer.mesh().mergedCells(), 0);
+  if (settings.mesh.walls == WallRepresentation::CutCells) {
+    ASSERT_GT(writer.mesh().mergedCells(), 0);
+  }
   const SharedTempFile file;
   const std::string& path = file.path();
   writeGasCheckpoint(writer, path, "5-test");
