@@ -146,13 +146,15 @@ def surface(mid, rho):
 
 
 def zone_solids(run):
-    """Mean of the cells' time-averaged solids fraction per height zone (last averages snapshot)."""
+    """Mean of the cells' time-averaged solids fraction per height zone (last averages snapshot), weighted by
+    the cells' fluid volume: a cut cell's fluid fraction (all 1 on a staircase mesh, which writes none)."""
     last = sorted(glob.glob(os.path.join(run, "averages_[0-9]*.h5")))[-1]
     with h5py.File(os.path.join(run, "fields_mesh.h5"), "r") as f:
         z = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)[:, 2]
+        fluid = np.asarray(f["fluid_fraction"]).ravel() if "fluid_fraction" in f else np.ones_like(z)
     with h5py.File(last, "r") as f:
         solids = np.asarray(f["mean_solids_fraction"]).ravel()
-    return [float(solids[(z >= lo) & (z < hi)].mean()) for lo, hi in ZONES]
+    return [float(np.average(solids[(z >= lo) & (z < hi)], weights=fluid[(z >= lo) & (z < hi)])) for lo, hi in ZONES]
 
 
 def summarize(name, run):
