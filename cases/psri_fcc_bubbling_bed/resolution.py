@@ -2,16 +2,17 @@
 """Is the filtered drag's bed surface a property of the model or of the resolution? (issue 32)
 
 The reduced case (reduced/case.yaml) with `RadlSundaresanFilteredBVK`, run 30 s with time averages over 20-30 s,
-and four variants that each change one thing:
-  baseline     the reduced case with the filtered drag (75 mm cells, 30 mm parcels, central return region)
+and five variants that each change one thing:
+  baseline     the reduced case with the filtered drag (75 mm cells cut by the column's cylinders, 30 mm
+               parcels, central return region)
   mesh_50mm    gas cells of 50 mm (18 x 18 x 150; the filter width follows the cell, as the model defines it)
   filter_2x    the filter width twice the cell (coupling.filtered_drag.filter_cells 2) on the 75 mm cells
   parcels_24mm parcels of 24 mm (131,836: the same solids volume), spring 8,000 N/m (scaled with the diameter
                as the reduced case scaled the full case's 5,000 N/m at 15 mm), DEM step 2e-4 s (the contact time
                scales with D), skin and reinjection interval likewise
   wall_return  the return region at the wall, 0.35 < r < 0.44 m (a dipleg-like annulus) instead of r < 0.2 m
-  cut_cells    the column, exit tube and sparger region on cut cells instead of the staircase (issue 31; the box's
-               side patches then have no face)
+  staircase    whole cells selected by their centre instead of cut cells (the staircase column of the cases
+               before issue 31; the box's side patches get their wall entries back)
 Each runs in RUNS/VARIANT/run on --ranks ranks with checkpoints every 5 s; calling the script again continues
 an unfinished run from its last checkpoint and skips a finished one, so the set can be spread over sessions.
 `--summary` only tabulates what has finished (RUNS/resolution.csv) and plots every dp/(g dz) profile with the
@@ -69,14 +70,14 @@ def wall_return(case):
     case["liggghts"]["variables"].update(return_r="0.44", return_rin="0.35")
 
 
-def cut_cells(case):
-    case["mesh"]["walls"] = "cut_cells"
+def staircase(case):
+    case["mesh"]["walls"] = "staircase"
     for side in ("xmin", "xmax", "ymin", "ymax"):
-        case["boundaries"].pop(side, None)
+        case["boundaries"][side] = {"type": "wall"}
 
 
 VARIANTS = {"baseline": [], "mesh_50mm": [mesh_50mm], "filter_2x": [filter_2x], "parcels_24mm": [parcels_24mm],
-            "wall_return": [wall_return], "cut_cells": [cut_cells]}
+            "wall_return": [wall_return], "staircase": [staircase]}
 
 
 def prepare(root, name, end):

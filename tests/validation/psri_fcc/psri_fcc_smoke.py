@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Smoke test of cases/psri_fcc_bubbling_bed (issue 12): the `smoke` variant as shipped (smoke/case.yaml: a
 0.3 m column with exit tube and ring sparger, 2,000 parcels of 20 mm over the FCC distribution), run on the
-ranks given, in a temporary copy of the case folder that is removed at the end. With `--walls cut_cells` the
-copy's gas mesh cuts its cells with the column's cylinders (issue 31: parcels on cut cells; the box's side
-patches then have no face and their boundary entries go).
+ranks given, in a temporary copy of the case folder that is removed at the end. The case's gas mesh cuts its
+cells with the column's cylinders (`mesh.walls: cut_cells`, issue 31); with `--walls staircase` the copy
+selects whole cells by their centre instead, and its box's side patches get their wall entries back.
 
 Checks:
 - with cut cells, no parcel has its centre outside the gas's fluid cells at the start, and on either mesh
@@ -21,7 +21,7 @@ Checks:
 - monitors.csv (a row after the first gas step and then every monitor interval, finite values), the field and parcel snapshots
   (fields.xdmf, parcels.xdmf) and averages.csv / averages.xdmf are written and readable (h5py).
 
-usage: psri_fcc_smoke.py [--walls cut_cells] PARCELFLOW MPIEXEC...
+usage: psri_fcc_smoke.py [--walls staircase] PARCELFLOW MPIEXEC...
 """
 import csv
 import math
@@ -184,28 +184,28 @@ def check(out, stdout, settings):
         fail("the flow leaving through the exit tube differs from the sparger's flow")
 
 
-def use_cut_cells(smoke):
+def use_staircase(smoke):
     path = os.path.join(smoke, "case.yaml")
     settings = yaml.safe_load(open(path))
-    settings["mesh"]["walls"] = "cut_cells"
+    settings["mesh"]["walls"] = "staircase"
     for side in ("xmin", "xmax", "ymin", "ymax"):
-        del settings["boundaries"][side]
+        settings["boundaries"][side] = {"type": "wall"}
     yaml.safe_dump(settings, open(path, "w"))
 
 
 def main():
     args = sys.argv[1:]
-    walls = "staircase"
-    if args[:1] == ["--walls"]:
-        walls, args = args[1], args[2:]
+    walls = "cut_cells"
+    if args[:2] == ["--walls", "staircase"]:
+        walls, args = "staircase", args[2:]
     parcelflow, launcher = args[0], args[1:]
     work = tempfile.mkdtemp(prefix="pf_psri_fcc_")
     try:
         case = os.path.join(work, "psri_fcc_bubbling_bed")
         shutil.copytree(CASE, case, ignore=shutil.ignore_patterns("output", "*.png"))
         smoke = os.path.join(case, "smoke")
-        if walls == "cut_cells":
-            use_cut_cells(smoke)
+        if walls == "staircase":
+            use_staircase(smoke)
         settings = yaml.safe_load(open(os.path.join(smoke, "case.yaml")))
         out = os.path.join(work, "output")
         start = time.time()
