@@ -22,7 +22,7 @@ using cfd::exactNumber;
 
 namespace {
 
-const char* const kReservedVariables[] = {"dem_step", "restarting", "restart_file"};
+const char* const kReservedVariables[] = {"dem_step", "restarting", "restart_file", "geometry_stl"};
 
 }  // namespace
 
@@ -33,7 +33,7 @@ DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::st
     for (const char* reserved : kReservedVariables)
       if (name == reserved)
         throw cfd::ConfigError("liggghts.variables." + name, value,
-                               std::string("a name other than dem_step, restarting and restart_file: parcelflow sets ") +
+                               std::string("a name other than dem_step, restarting, restart_file and geometry_stl: parcelflow sets ") +
                                    reserved + " itself");
   std::vector<std::string> passed(std::begin(kReservedVariables), std::end(kReservedVariables));
   for (const auto& variable : settings.liggghts.variables) passed.push_back(variable.first);
@@ -42,13 +42,14 @@ DemEngine::DemEngine(MPI_Comm world, const CaseSettings& settings, const std::st
 
 DemEngine::~DemEngine() = default;
 
-void DemEngine::start(const std::string& restart_file) {
+void DemEngine::start(const std::string& restart_file, const std::string& geometry_stl) {
   const TimeSettings& time = settings_.time;
   const std::string restart =
       restart_file.empty() ? std::string("none") : std::filesystem::absolute(restart_file).string();
   std::vector<std::string> args = {"-log", log_file_, "-var", "dem_step", exactNumber(time.dem_step),
                                    "-var", "restarting", restart_file.empty() ? "0" : "1",
-                                   "-var", "restart_file", restart};
+                                   "-var", "restart_file", restart,
+                                   "-var", "geometry_stl", geometry_stl.empty() ? std::string("none") : geometry_stl};
   for (const auto& [name, value] : settings_.liggghts.variables) args.insert(args.end(), {"-var", name, value});
   // LIGGGHTS runs the case's script from the case folder, so that its includes and data files resolve.
   if (chdir(case_folder_.c_str()) != 0)

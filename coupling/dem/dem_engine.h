@@ -5,7 +5,9 @@
 // Variables parcelflow passes to the script (a case may not set them in liggghts.variables):
 //   dem_step      the DEM time step of case.yaml (`timestep ${dem_step}`);
 //   restarting    0 for a fresh start, 1 when continuing a checkpoint;
-//   restart_file  the LIGGGHTS restart to read when restarting (else "none").
+//   restart_file  the LIGGGHTS restart to read when restarting (else "none");
+//   geometry_stl  case.yaml's geometry as a closed STL file (geometry_stl.h), for `fix mesh/surface file
+//                 ${geometry_stl}`: the parcels' walls the gas's (else "none").
 // A restartable script reads ${restart_file} instead of creating the box and skips its filling and settling
 // when ${restarting} is 1 (coupling/README.md, "Checkpoints").
 #pragma once
@@ -31,10 +33,11 @@ class DemEngine {
             const std::string& log_file);
   ~DemEngine();
 
-  // Runs the script (a fresh start, or `restart_file` non-empty: continue from it), checks the time step
+  // Runs the script (a fresh start, or `restart_file` non-empty: continue from it; `geometry_stl` the path
+  // the script's ${geometry_stl} gives), checks the time step
   // (against the script's and the contact time, contact_time_check.h), finds the parcel fixes, refuses a
   // script that inserted no parcel and runs `run 0` (neighbour lists built, forces at hand for the first chunk).
-  void start(const std::string& restart_file = {});
+  void start(const std::string& restart_file = {}, const std::string& geometry_stl = {});
 
   DemParcels& parcels() { return *parcels_; }
   const DemParcels& parcels() const { return *parcels_; }

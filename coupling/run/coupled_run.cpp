@@ -18,6 +18,7 @@
 #include "case_reader.h"
 #include "checkpoint.h"
 #include "dem_engine.h"
+#include "geometry_stl.h"
 #include "monitor_registry.h"
 #include "monitor_table.h"
 #include "output_folder.h"
@@ -182,7 +183,8 @@ void CoupledRun::initialize() {
     s.smoother = std::make_unique<cfd::DiffusionSmoother>(mesh, cs.coupling.kernel.smoothing_length);
   s.spill_excess_solids = cs.coupling.excess_solids == "spill";
 
-  s.dem->start(checkpoint ? checkpoint->paths.dem : std::string());
+  s.dem->start(checkpoint ? checkpoint->paths.dem : std::string(),
+               writeGeometryStl(s.case_def.gas, s.output.string(), MPI_COMM_WORLD));
   s.dem_steps = cs.time.demStepsPerGasStep();
   s.loop.initial_parcels = s.dem->parcels().globalCount();
   KernelReach kernel_reach;

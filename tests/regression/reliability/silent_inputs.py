@@ -29,6 +29,8 @@ def time_settings(runs):
                                                   end=None), 2, "time.gas_step", "at most 1e6 DEM steps")
     expect("liggghts.variables.dem_step", runs.run(runs.case(lambda s: s["liggghts"]["variables"].update(
         dem_step="1e-5"))), 2, "liggghts.variables.dem_step", "parcelflow sets dem_step itself")
+    expect("liggghts.variables.geometry_stl", runs.run(runs.case(lambda s: s["liggghts"]["variables"].update(
+        geometry_stl="walls.stl"))), 2, "liggghts.variables.geometry_stl", "parcelflow sets geometry_stl itself")
 
 
 def counts_not_written_in_digits(runs):
