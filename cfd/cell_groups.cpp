@@ -4,9 +4,10 @@ namespace parcelflow::cfd {
 
 namespace {
 
-// The master a small cut cell joins: the neighbour across its largest open face that is not small
-// (the lowest background index on a tie), -1 when there is none.
-long masterOf(const CartesianBackground& bg, const CutCellGeometry& cut, long b, double smallFraction) {
+// The neighbour of background cell b across its largest open face among those `joinable` accepts (the
+// lowest background index on a tie), -1 when there is none.
+template <class Joinable>
+long largestOpenNeighbour(const CartesianBackground& bg, const CutCellGeometry& cut, long b, const Joinable& joinable) {
   const auto ijk = bg.ijk(b);
   long best = -1;
   double bestOpen = 0.0;
@@ -16,7 +17,7 @@ long masterOf(const CartesianBackground& bg, const CutCellGeometry& cut, long b,
     if (!bg.inside(n[0], n[1], n[2])) continue;
     const long nb = bg.index(n[0], n[1], n[2]);
     const double open = cut.openFraction(b, static_cast<CellFace>(f));
-    if (cut.fluidFraction(nb) < smallFraction || open <= 0.0) continue;
+    if (!joinable(nb) || open <= 0.0) continue;
     if (open > bestOpen || (open == bestOpen && nb < best)) {
       best = nb;
       bestOpen = open;
@@ -32,18 +33,38 @@ CellGroups groupCells(const CartesianBackground& bg, const std::vector<bool>& fl
   CellGroups g;
   const long nBg = bg.size();
   std::vector<long> master(nBg, -1);  // the background cell whose group b belongs to
+  std::vector<long> alone;            // small cells with no open face to a cell that is not small
   for (long b = 0; b < nBg; ++b) {
     if (!fluid[b]) continue;
     master[b] = b;
     if (!cut || cut->fluidFraction(b) >= smallFraction) continue;
-    const long m = masterOf(bg, *cut, b, smallFraction);
+    const long m = largestOpenNeighbour(bg, *cut, b, [&](long nb) { return cut->fluidFraction(nb) >= smallFraction; });
     if (m >= 0) {
       master[b] = m;
       ++g.mergedCells;
     } else {
-      ++g.unmergedSmallCells;
+      alone.push_back(b);
     }
   }
+  // A small cell whose open faces all lead to small cells (a sliver in a corner of other cut cells) joins
+  // the group of a neighbour that has joined one, in rounds until none is left that can: its group is then
+  // connected through its members' faces rather than all through the master's.
+  for (bool joined = true; joined && !alone.empty();) {
+    joined = false;
+    std::vector<long> still;
+    for (long b : alone) {
+      const long nb = largestOpenNeighbour(bg, *cut, b, [&](long n) { return master[n] >= 0 && master[n] != n; });
+      if (nb >= 0) {
+        master[b] = master[nb];
+        ++g.mergedCells;
+        joined = true;
+      } else {
+        still.push_back(b);
+      }
+    }
+    alone.swap(still);
+  }
+  g.unmergedSmallCells = static_cast<long>(alone.size());
   g.globalOfBackground.assign(nBg, -1);
   for (long b = 0; b < nBg; ++b)
     if (master[b] == b) {

@@ -5,7 +5,8 @@
 // neighbours that are not small themselves (the master): the gas cell is their union. Tiny cells
 // would otherwise keep fluid centroids a round-off away from their faces (a fraction of 2e-13 put one
 // outside its cell, 2e-17 blew the pipe flow up; cfd/README.md, "Cut cells in the solver").
-// Masters are never merged, so a merged cell is its master and slivers sharing a face with it.
+// Masters are never merged, so a merged cell is its master and slivers sharing a face with it, or, for a
+// sliver whose open faces all lead to small cells, with another of its slivers (joined in later rounds).
 #include <vector>
 
 #include "cartesian_background.hpp"
@@ -18,7 +19,7 @@ struct CellGroups {
   std::vector<long> backgroundOfGlobal;    // per group: the master's background index (ids in its order)
   std::vector<std::vector<long>> members;  // per group: its background cells, the master first
   long mergedCells = 0;                    // small cells merged into a master
-  long unmergedSmallCells = 0;             // small cells with no open face to a cell that is not small
+  long unmergedSmallCells = 0;             // small cells with no open face to a cell that is neither small nor merged
 };
 
 // `fluid[b]`: whether background cell b holds fluid; `cut`: the cut-cell geometry or null (staircase).
