@@ -85,18 +85,27 @@ TEST(CutCellMesh, VolumesClosureAndPatches) {
   EXPECT_GT(wall, 0.97 * expected);
 }
 
-// A pipe of radius 0.5 m + 5e-11 m on 24 x 24 cells of 0.05 m: the 128-gon's corner at (R, 0) passes
-// the grid line x = 0.5 by 5e-11 m and leaves slivers of 2e-17 of a cell beyond it. Every cut cell
-// under 1 % is merged into a neighbour (cell_groups.hpp): no cell is smaller, the volume is kept, the
-// merged cells close, every face has a positive delta, and the sliver's background cell gives its cell.
-TEST(CutCellMesh, SmallCellsMergedIntoANeighbour) {
+namespace {
+// The pipe of the next two tests on 24 x 24 x 1 cut cells, small ones merged below `smallFraction`.
+MeshSettings sliverPipeMesh(double smallFraction) {
   MeshSettings settings;
   settings.origin = Vec3(-0.6, -0.6, 0.0);
   settings.lengths = Vec3(1.2, 1.2, 0.1);
   settings.cells = {24, 24, 1};
   settings.walls = WallRepresentation::CutCells;
-  const Geometry geometry({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.5 + 5e-11, 0, 0.1), ""}});
-  const Mesh m = MeshBuilder::build(settings, geometry, MPI_COMM_WORLD);
+  settings.smallCellFraction = smallFraction;
+  return settings;
+}
+const Geometry sliverPipe({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.5 + 5e-11, 0, 0.1), ""}});
+}  // namespace
+
+// A pipe of radius 0.5 m + 5e-11 m on 24 x 24 cells of 0.05 m: the 128-gon's corner at (R, 0) passes
+// the grid line x = 0.5 by 5e-11 m and leaves slivers of 2e-17 of a cell beyond it. Every cut cell
+// under 1 % is merged into a neighbour (cell_groups.hpp): no cell is smaller, the volume is kept, the
+// merged cells close, every face has a positive delta, and the sliver's background cell gives its cell.
+TEST(CutCellMesh, SmallCellsMergedIntoANeighbour) {
+  const Geometry& geometry = sliverPipe;
+  const Mesh m = MeshBuilder::build(sliverPipeMesh(kDefaultSmallCellFraction), geometry, MPI_COMM_WORLD);
   const double cellVolume = m.background().cellVolume();
   EXPECT_EQ(m.mergedCells(), 12);  // 4 below 1 % at R = 0.5 m, and the slivers on the 4 axes
   EXPECT_EQ(m.unmergedSmallCells(), 0);
@@ -137,14 +146,8 @@ TEST(CutCellMesh, SmallCellsMergedIntoANeighbour) {
 // mesh.small_cell_fraction: the same pipe with cut cells under 5 % merged: more cells merged, none
 // smaller, the volume kept.
 TEST(CutCellMesh, SmallCellFractionSetsTheMergeThreshold) {
-  MeshSettings settings;
-  settings.origin = Vec3(-0.6, -0.6, 0.0);
-  settings.lengths = Vec3(1.2, 1.2, 0.1);
-  settings.cells = {24, 24, 1};
-  settings.walls = WallRepresentation::CutCells;
-  settings.smallCellFraction = 0.05;
-  const Geometry geometry({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.5 + 5e-11, 0, 0.1), ""}});
-  const Mesh m = MeshBuilder::build(settings, geometry, MPI_COMM_WORLD);
+  const Geometry& geometry = sliverPipe;
+  const Mesh m = MeshBuilder::build(sliverPipeMesh(0.05), geometry, MPI_COMM_WORLD);
   EXPECT_GT(m.mergedCells(), 12);  // 12 at the default 1 %
   EXPECT_EQ(m.unmergedSmallCells(), 0);
   double volume = 0, smallest = 1;
