@@ -17,6 +17,7 @@
 #include "blowup_guard.h"
 #include "case_reader.h"
 #include "checkpoint.h"
+#include "coupler_view.h"
 #include "dem_engine.h"
 #include "geometry_stl.h"
 #include "monitor_registry.h"
@@ -152,16 +153,8 @@ void CoupledRun::initialize() {
   if (cs.monitors.has_bed_pressure_drop)
     PlaneAverages(mesh, {cs.monitors.bed_pressure_drop[0], cs.monitors.bed_pressure_drop[1]},
                   "monitors.bed_pressure_drop");
-  std::vector<OwnedPiece> owned;
-  for (int c = 0; c < mesh.nOwnedCells(); ++c)
-    for (int m = 0; m < mesh.nMembers(c); ++m) owned.push_back({mesh.member(c, m), c, mesh.memberFluidFraction(c, m)});
-  s.owners = std::make_unique<CellOwnerMap>(MPI_COMM_WORLD, mesh.background().size(), owned);
-  BackgroundGrid grid;
-  for (int d = 0; d < 3; ++d) {
-    grid.origin[d] = mesh.background().origin()[d];
-    grid.spacing[d] = mesh.background().spacing()[d];
-    grid.cells[d] = mesh.background().n()[d];
-  }
+  s.owners = std::make_unique<CellOwnerMap>(MPI_COMM_WORLD, mesh.background().size(), ownedPiecesOf(mesh));
+  const BackgroundGrid grid = backgroundGridOf(mesh);
   TransferKernelOptions kernel_options;
   kernel_options.gaussianSharpness = cs.coupling.kernel.sharpness;
   kernel_options.gaussianRadius = cs.coupling.kernel.radius;

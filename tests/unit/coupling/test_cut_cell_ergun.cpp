@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cfd/gas_solver.hpp"
-#include "tests/unit/coupling/cut_cell_coupling.hpp"
+#include "coupler_view.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;
@@ -87,8 +87,8 @@ ErgunRun runPackedCylinder(const char* kernel) {
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   cfd::GasSolver gas(columnSettings(), MPI_COMM_WORLD);
   const cfd::Mesh& mesh = gas.mesh();
-  const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), pc::test::piecesOf(mesh));
-  pc::ParcelMeshCoupler coupler(pc::test::gridOf(mesh), owners, pc::makeTransferKernel(kernel),
+  const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), pc::ownedPiecesOf(mesh));
+  pc::ParcelMeshCoupler coupler(pc::backgroundGridOf(mesh), owners, pc::makeTransferKernel(kernel),
                                 pc::makeDragLaw("Ergun"), pc::DragLimits{0.3}, pc::GasProperties{kRho, kMu});
   const LatticeParcels parcels(rank, size);
   const pc::TransferStats stats = coupler.beginStep(parcels.batch());

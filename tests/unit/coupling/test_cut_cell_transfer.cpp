@@ -12,7 +12,7 @@
 
 #include "cfd/mesh_builder.hpp"
 #include "parcel_mesh_coupler.h"
-#include "tests/unit/coupling/cut_cell_coupling.hpp"
+#include "coupler_view.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;
@@ -58,12 +58,12 @@ TEST_P(CutCellTransfer, ConservesVolumeDragAndMomentumInFluidVolume) {
   ASSERT_GT(mesh.mergedCells(), 0);  // the merged cells are part of what is tested
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), pc::test::piecesOf(mesh));
+  const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), pc::ownedPiecesOf(mesh));
   long cut = 0;  // background cells the wall cuts, as the owner map reports them
   for (long b = 0; b < owners.backgroundSize(); ++b)
     cut += owners.fluidFraction(b) > 0.0 && owners.fluidFraction(b) < 1.0;
   ASSERT_GT(cut, 0);
-  pc::ParcelMeshCoupler coupler(pc::test::gridOf(mesh), owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
+  pc::ParcelMeshCoupler coupler(pc::backgroundGridOf(mesh), owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
                                 pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   for (int c = 0; c < mesh.nOwnedCells(); ++c) ASSERT_DOUBLE_EQ(coupler.ownedCellVolume(c), mesh.cellVolume(c)) << c;
   const Parcels parcels(rank, 600);
@@ -89,8 +89,8 @@ INSTANTIATE_TEST_SUITE_P(Kernels, CutCellTransfer, ::testing::Values("gaussian",
 // cell's fluid volume (a staircase would divide by the whole background cell, or drop it).
 TEST(CutCellTransfer, AParcelInACutCellFillsItsFluidVolume) {
   const cfd::Mesh mesh = pipeMesh();
-  const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), pc::test::piecesOf(mesh));
-  pc::ParcelMeshCoupler coupler(pc::test::gridOf(mesh), owners, pc::makeTransferKernel("centroid"), pc::makeDragLaw("WenYu"),
+  const pc::CellOwnerMap owners(MPI_COMM_WORLD, mesh.background().size(), pc::ownedPiecesOf(mesh));
+  pc::ParcelMeshCoupler coupler(pc::backgroundGridOf(mesh), owners, pc::makeTransferKernel("centroid"), pc::makeDragLaw("WenYu"),
                                 pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   // (0.48, 0.01, 0.025): in background cell (21, 12, 0), which the pipe's wall cuts at x = 0.4975-0.5
   const long cell = mesh.background().index(21, 12, 0);

@@ -1,14 +1,16 @@
+// The coupler's view of a gas mesh: the background grid the parcels are binned on, and every owned gas cell's
+// background cells (a cut cell's master and merged slivers) with their fluid shares, for the CellOwnerMap.
 #pragma once
-// The coupler's view of a gas mesh, as coupled_run.cpp builds it: the background grid and every owned gas
-// cell's background cells (master and merged slivers) with their fluid shares.
+
 #include <vector>
 
+#include "cell_owner_map.h"
 #include "cfd/mesh.hpp"
 #include "parcel_mesh_coupler.h"
 
-namespace parcelflow::coupling::test {
+namespace parcelflow::coupling {
 
-inline BackgroundGrid gridOf(const cfd::Mesh& mesh) {
+inline BackgroundGrid backgroundGridOf(const cfd::Mesh& mesh) {
   BackgroundGrid grid;
   for (int d = 0; d < 3; ++d) {
     grid.origin[d] = mesh.background().origin()[d];
@@ -18,11 +20,11 @@ inline BackgroundGrid gridOf(const cfd::Mesh& mesh) {
   return grid;
 }
 
-inline std::vector<OwnedPiece> piecesOf(const cfd::Mesh& mesh) {
+inline std::vector<OwnedPiece> ownedPiecesOf(const cfd::Mesh& mesh) {
   std::vector<OwnedPiece> pieces;
   for (int c = 0; c < mesh.nOwnedCells(); ++c)
     for (int m = 0; m < mesh.nMembers(c); ++m) pieces.push_back({mesh.member(c, m), c, mesh.memberFluidFraction(c, m)});
   return pieces;
 }
 
-}  // namespace parcelflow::coupling::test
+}  // namespace parcelflow::coupling
