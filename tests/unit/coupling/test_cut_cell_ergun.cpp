@@ -115,8 +115,8 @@ ErgunRun runPackedCylinder(const char* kernel) {
   for (int step = 0; step < 40; ++step) {
     for (int c = 0; c < n; ++c)
       for (int d = 0; d < 3; ++d) velocity[3 * c + d] = gas.velocity()[c][d];
-    coupler.computeDrag(std::vector<double>(gasFraction.begin(), gasFraction.end()), velocity, onCells, atParcels);
-    gas.setDragCoefficient(cfd::ScalarField(onCells.beta.begin(), onCells.beta.end()));
+    coupler.computeDrag(gasFraction, velocity, onCells, atParcels);
+    gas.setDragCoefficient(onCells.beta);
     gas.advance(5e-3);
   }
 
