@@ -161,7 +161,7 @@ void CoupledRun::initialize() {
   kernel_options.gaussianIsotropic = cs.coupling.kernel.length_scale == "cell_volume";
   for (int d = 0; d < 3; ++d) kernel_options.gaussianSpacing[d] = grid.spacing[d];
   kernel_options.gaussianParcelFactor = cs.coupling.kernel.parcel_scale;
-  kernel_options.gaussianReflectAtFaces = cs.coupling.kernel.boundary == "reflect";
+  kernel_options.gaussianReflectAtWalls = cs.coupling.kernel.boundary == "reflect";
   DragLawContext drag_context;  // per-case constants of the filtered law (the others ignore them)
   drag_context.filterSize =
       cs.coupling.filtered_drag.filter_cells * std::cbrt(grid.spacing[0] * grid.spacing[1] * grid.spacing[2]);

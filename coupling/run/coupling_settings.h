@@ -32,8 +32,8 @@ struct KernelSettings {
   // lambda: a parcel of collision diameter D wider than lambda D > h is spread over h_p = lambda D instead
   // (gaussian only; 0: h for every parcel, the paper's eq. 8 as written)
   double parcel_scale = 0.0;
-  // at the faces of the background box: "truncate" (the part beyond a face is dropped before the weights
-  // are renormalised) or "reflect" (it is folded back onto the mirror cells: image parcels)
+  // at walls (the background box's faces, cells without fluid, cut cells' cuts): "truncate" (the part beyond a
+  // wall is dropped before the weights are renormalised) or "reflect" (image parcels behind the wall)
   std::string boundary = "truncate";
   // L [m]: the deposited solids fraction is smoothed by implicit diffusion over L (cfd/diffusion_smoother.hpp:
   // conservative, no flux through the boundaries); 0: not smoothed

@@ -53,11 +53,11 @@ TransferStats buildWith(const Kernel& kernel, const BackgroundGrid& grid, const 
   out.windows.resize(n);
   out.first.assign(n, -1);
   int lo[3] = {INT_MAX, INT_MAX, INT_MAX}, hi[3] = {INT_MIN, INT_MIN, INT_MIN};
-  const auto isFluid = [&](int i, int j, int k) { return fluid.isFluid(i, j, k); };
+  const auto fluidShare = [&](int i, int j, int k) { return fluid.fluidFraction(i, j, k); };
   TransferStats stats;
   for (std::size_t p = 0; p < n; ++p) {
     Window& w = out.windows[p];
-    StencilResult r = kernel.window(grid, pos + 3 * p, diameter ? diameter[p] : 0.0, isFluid, w);
+    StencilResult r = kernel.window(grid, pos + 3 * p, diameter ? diameter[p] : 0.0, fluidShare, w);
     if (r != StencilResult::orphan) {
       const double sum = fluidSum(w, fluid);
       if (sum > 0.0) {

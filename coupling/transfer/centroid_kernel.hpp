@@ -22,10 +22,10 @@ class CentroidKernel {
   int searchRadius() const { return r_; }
   bool readsDiameter() const { return false; }
 
-  // One cell with factor 1: the containing one if it is fluid (isFluid(i, j, k)), else the nearest
+  // One cell with factor 1: the containing one if it is fluid (fluidShare(i, j, k) > 0), else the nearest
   // fluid cell within +-searchRadius (fallback), else none (orphan). The parcel's diameter is not read.
-  template <class IsFluid>
-  StencilResult window(const BackgroundGrid& g, const double* x, double /*diameter*/, const IsFluid& isFluid,
+  template <class FluidShare>
+  StencilResult window(const BackgroundGrid& g, const double* x, double /*diameter*/, const FluidShare& fluidShare,
                        Window& w) const {
     int ic[3];
     bool inside = true;
@@ -39,7 +39,7 @@ class CentroidKernel {
       }
       ic[d] = i;
     }
-    if (inside && isFluid(ic[0], ic[1], ic[2])) {
+    if (inside && fluidShare(ic[0], ic[1], ic[2]) > 0.0) {
       setCell(ic, w);
       return StencilResult::ok;
     }
@@ -50,7 +50,7 @@ class CentroidKernel {
       for (int j = ic[1] - r_; j <= ic[1] + r_; ++j) {
         if (j < 0 || j >= g.cells[1]) continue;
         for (int i = ic[0] - r_; i <= ic[0] + r_; ++i) {
-          if (i < 0 || i >= g.cells[0] || !isFluid(i, j, k)) continue;
+          if (i < 0 || i >= g.cells[0] || !(fluidShare(i, j, k) > 0.0)) continue;
           const double dx = g.cellCentre(0, i) - x[0], dy = g.cellCentre(1, j) - x[1],
                        dz = g.cellCentre(2, k) - x[2];
           const double dist2 = dx * dx + dy * dy + dz * dz;

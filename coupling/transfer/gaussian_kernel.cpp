@@ -35,12 +35,12 @@ GaussianKernel::GaussianKernel(double sharpness, int radius, const double (&spac
 }
 
 GaussianKernel::GaussianKernel(double sharpness, int radius, const double (&spacing)[3], bool isotropic,
-                               double parcelFactor, bool reflectAtFaces)
+                               double parcelFactor, bool reflectAtWalls)
     : GaussianKernel(isotropic ? GaussianKernel(sharpness, radius, spacing) : GaussianKernel(sharpness, radius)) {
   PARCELFLOW_ASSERT(parcelFactor >= 0.0 && std::isfinite(parcelFactor),
                     "gaussian kernel: parcel factor must be >= 0, got " + std::to_string(parcelFactor));
   parcelFactor_ = parcelFactor;
-  reflect_ = reflectAtFaces;
+  reflect_ = reflectAtWalls;
 }
 
 double GaussianKernel::retainedMassFraction1D(double sharpness, int radius, double offset) {

@@ -12,7 +12,7 @@ TransferKernel makeTransferKernel(const std::string& name, const TransferKernelO
   if (name == GaussianKernel::typeName)
     return GaussianKernel(options.gaussianSharpness, options.gaussianRadius, options.gaussianSpacing,
                           options.gaussianIsotropic, options.gaussianParcelFactor,
-                          options.gaussianReflectAtFaces);
+                          options.gaussianReflectAtWalls);
   if (name == CentroidKernel::typeName) return CentroidKernel(options.centroidSearchRadius);
   std::string valid;
   for (const std::string& n : transferKernelNames()) valid += (valid.empty() ? "" : ", ") + n;

@@ -22,8 +22,8 @@ struct TransferKernelOptions {
   double gaussianSpacing[3] = {1.0, 1.0, 1.0};
   // lambda: a parcel of collision diameter D is spread over at least h_p = lambda D (0: the cell's h only)
   double gaussianParcelFactor = 0.0;
-  // the background's faces mirror the kernel (image parcels) instead of truncating it
-  bool gaussianReflectAtFaces = false;
+  // walls (the background box's faces and cells without fluid) mirror the kernel (image parcels) instead of truncating it
+  bool gaussianReflectAtWalls = false;
   int centroidSearchRadius = 1;    // fallback search for the centroid kernel
 };
 

@@ -30,8 +30,8 @@ StencilResult stencilOf(const Kernel& kernel, const BackgroundGrid& g, const dou
                         Stencil& s, double diameter = 0.0) {
   s.size = 0;
   Window w;
-  const auto isFluid = [&](int i, int j, int k) { return localCell(i, j, k) >= 0; };
-  const StencilResult r = kernel.window(g, x, diameter, isFluid, w);
+  const auto fluidShare = [&](int i, int j, int k) { return localCell(i, j, k) >= 0 ? 1.0 : 0.0; };
+  const StencilResult r = kernel.window(g, x, diameter, fluidShare, w);
   if (r == StencilResult::orphan) return r;
   double sum = 0.0;
   for (int c = 0; c < w.n[2]; ++c)

@@ -263,6 +263,51 @@ TEST(Deposition, ReflectingFacesDepositUniformCentresUniformly) {
   EXPECT_GE(deviation[1], 1e-2);
 }
 
+TEST(Deposition, ReflectingWallsInsideTheBoxDepositUniformCentresUniformly) {
+  // The same inside the box: the cells i >= 30 of a 40-cell row are solid (a staircase wall), and parcel centres
+  // spread evenly over the fluid cells 0..29 deposit evenly up to that wall when it reflects; truncating piles
+  // volume next to it as at a face.
+  MaskedGrid g = makeGrid({40, 3, 3}, false);
+  const int fluidCells = 30, perCell = 100, n = fluidCells * perCell;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = fluidCells; i < 40; ++i) g.local[(static_cast<std::size_t>(k) * 3 + j) * 40 + i] = -1;
+  std::vector<double> pos;
+  for (int p = 0; p < n; ++p) {
+    pos.push_back(g.grid.origin[0] + (p + 0.5) / perCell * g.grid.spacing[0]);
+    pos.push_back(g.grid.cellCentre(1, 1));
+    pos.push_back(g.grid.cellCentre(2, 1));
+  }
+  const std::vector<double> volume(n, 1.0);
+  const double spacing[3] = {0.01, 0.02, 0.015};
+  double deviation[2];
+  for (const bool reflect : {true, false}) {
+    BoxStencils set;
+    buildBoxStencils(GaussianKernel(1.0, 2, spacing, true, 0.0, reflect), g.grid, fluidOf(g), n, pos.data(), set);
+    std::vector<double> box(set.boxSize(), 0.0);
+    deposit(set, 1, volume.data(), box.data());
+    std::vector<double> column(40, 0.0);
+    for (int k = 0; k < set.cells[2]; ++k)
+      for (int j = 0; j < set.cells[1]; ++j)
+        for (int i = 0; i < set.cells[0]; ++i) {
+          const int ci = set.lo[0] + i;
+          const double v = box[set.boxIndex(ci, set.lo[1] + j, set.lo[2] + k)];
+          if (g.active(ci, set.lo[1] + j, set.lo[2] + k)) column[ci] += v;
+        }
+    double worst = 0.0, total = 0.0;
+    for (int i = 0; i < 40; ++i) {
+      total += column[i];
+      if (i < fluidCells) worst = std::max(worst, std::abs(column[i] / perCell - 1.0));
+    }
+    EXPECT_NEAR(total, n, 1e-9 * n);  // nothing lands on the solid cells
+    deviation[reflect ? 0 : 1] = worst;
+  }
+  std::printf("[measured] inside wall, largest deviation of a cell from the mean: reflect %.2e, truncate %.2e\n",
+              deviation[0], deviation[1]);
+  EXPECT_LE(deviation[0], 1e-3);
+  EXPECT_GE(deviation[1], 1e-2);
+}
+
 TEST(BoxStencils, OrphansAreMarkedAndGatherNaN) {
   const MaskedGrid g = makeGrid({12, 10, 8}, true);
   const auto& G = g.grid;

@@ -287,6 +287,36 @@ TEST(KernelWeights, ReflectingFacesAddTheMirrorImagesWeights) {
   for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
 }
 
+TEST(KernelWeights, ReflectingWallsInsideTheBoxAddTheMirrorImagesWeights) {
+  // The L-shaped mask's cut-out block (i >= 6 for j >= 5) is a wall inside the box. A parcel 0.3 cells left of
+  // its face x = 6 in a row that meets it: the cells beyond the face (i = 6, 7) fold onto their mirror cells
+  // (5, 4), as the image parcel behind the face puts them; the window stops at the face. Along y the parcel's
+  // row (i = 5) is fluid throughout, so y stays the Gaussian.
+  const MaskedGrid g = makeGrid({12, 10, 8}, true);
+  const GaussianKernel reflecting(1.0, 2, kTestSpacing, true, 0.0, true);
+  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);
+  const double face = g.grid.origin[0] + 6 * g.grid.spacing[0];
+  const double x[3] = {face - 0.3 * g.grid.spacing[0], g.grid.cellCentre(1, 7) + 0.2 * g.grid.spacing[1],
+                       g.grid.cellCentre(2, 4) - 0.1 * g.grid.spacing[2]};
+  const double image = 2.0 * face - x[0];
+  Stencil s;
+  ASSERT_EQ(stencilOf(reflecting, g.grid, x, g, s), StencilResult::ok);
+  ASSERT_EQ(s.size, 3 * 5 * 5);  // cells 3..5 in x
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double r2 = 0.0;
+    for (int d = 1; d < 3; ++d) r2 += std::pow(g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d], 2);
+    const int ix = g.ijkOf[s.cell[e]][0];
+    EXPECT_LE(ix, 5);
+    const double cx = g.grid.cellCentre(0, ix);
+    expected[e] = std::exp(-(r2 + std::pow(cx - x[0], 2)) / (h * h)) +
+                  (ix >= 4 ? std::exp(-(r2 + std::pow(cx - image, 2)) / (h * h)) : 0.0);
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+}
+
 TEST(KernelWeights, ReflectingFacesFoldAWindowWiderThanTheBox) {
   // 2 cells across, a window of +-4: cells beyond both faces fold back, repeatedly, and the weights
   // still sum to 1 over the 2 cells.
