@@ -186,10 +186,11 @@ void CoupledRun::initialize() {
   kernel_reach.parcel_scale = cs.coupling.kernel.parcel_scale;
   kernel_reach.smoothing_length = cs.coupling.kernel.smoothing_length;
   kernel_reach.spills_excess = s.spill_excess_solids;
-  kernel_reach.narrowest_extent = std::min({grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1],
-                                            grid.spacing[2] * grid.cells[2]});
+  const std::array<bool, 3> dem_periodic = s.dem->periodicAxes();
+  kernel_reach.narrowest_extent = narrowestExtentBetweenWalls(
+      {grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1], grid.spacing[2] * grid.cells[2]}, dem_periodic);
   kernel_reach.side_wall_area_per_volume =
-      sideWallAreaPerVolume(mesh, s.case_def.gas.boundaries, s.case_def.gas.gas.gravity, s.dem->periodicAxes());
+      sideWallAreaPerVolume(mesh, s.case_def.gas.boundaries, s.case_def.gas.gas.gravity, dem_periodic);
   const cfd::LinearSolverSettings& pressure = s.case_def.gas.solver.pressure;
   const std::string pressure_stop_rule =
       pressure.criterion == cfd::StoppingCriterion::Strict

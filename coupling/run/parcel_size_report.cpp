@@ -1,5 +1,7 @@
 #include "parcel_size_report.h"
 
+#include <cmath>
+
 #include "cfd/number_text.hpp"
 
 namespace parcelflow::coupling {
@@ -11,10 +13,12 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
   // np slightly above 1 from rounding (np = (D/dp)^3 with D = dp) is a bed of single particles
   if (sizes.largest_np <= 1.0 + 1e-9) return lines;
   const double D = sizes.largest_diameter;
-  const double across = reach.narrowest_extent / D;
-  lines.push_back(formatNumbers("parcelflow: coarse graining: largest parcel D = %.4g mm (up to %.4g particles), "
-                         "%.3g parcels across the narrowest extent of the gas box (%.4g mm)",
-                         1e3 * D, sizes.largest_np, across, 1e3 * reach.narrowest_extent));
+  const double across = reach.narrowest_extent / D;  // infinite when every axis is periodic
+  lines.push_back(formatNumbers("parcelflow: coarse graining: largest parcel D = %.4g mm (up to %.4g particles)",
+                                1e3 * D, sizes.largest_np));
+  if (std::isfinite(across))
+    lines.back() += formatNumbers(", %.3g parcels across the narrowest extent between walls (%.4g mm)", across,
+                                  1e3 * reach.narrowest_extent);
   if (reach.length > 0.0) {
     const double ratio = D / reach.length;
     const bool widened = reach.parcel_scale * D > reach.length;
@@ -44,7 +48,7 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                            wall_share, kWallLayerShare, 1e3 * sizes.largest_excess, reach.side_wall_area_per_volume));
   if (across < kParcelsAcrossTheNarrowestExtent)
     lines.push_back(formatNumbers("parcelflow: warning: %.3g parcels of D = %.4g mm across the narrowest extent of the "
-                           "bed (%.4g mm; limit %.3g): the parcels pack looser at the walls than the particles "
+                           "bed between walls (%.4g mm; limit %.3g): the parcels pack looser at the walls than the particles "
                            "they stand for, and such a bed fluidized later than its particles (the Goldschmidt "
                            "bed's 5 mm parcels, 3 across); use smaller parcels",
                            across, 1e3 * D, 1e3 * reach.narrowest_extent, kParcelsAcrossTheNarrowestExtent));

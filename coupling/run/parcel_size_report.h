@@ -18,7 +18,7 @@ struct ParcelSizes {
 struct KernelReach {
   double length = 0.0;          // h of the gaussian kernel [m] (0: a kernel without one, the centroid)
   double parcel_scale = 0.0;    // coupling.kernel.parcel_scale
-  double narrowest_extent = 0.0;  // the gas box's smallest length [m]
+  double narrowest_extent = 0.0;  // the gas box's smallest length between walls (not periodic for the DEM) [m]
   double smoothing_length = 0.0;  // coupling.kernel.smoothing_length [m]
   bool spills_excess = false;     // coupling.excess_solids: spill (the floor keeps the solids volume)
   double side_wall_area_per_volume = 0.0;  // side_walls.h [1/m]

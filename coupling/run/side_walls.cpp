@@ -1,6 +1,8 @@
 #include "side_walls.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace parcelflow::coupling {
 
@@ -27,6 +29,13 @@ double sideWallAreaPerVolume(const cfd::Mesh& mesh, const std::vector<cfd::Bound
   for (int c = 0; c < mesh.nOwnedCells(); ++c) volume += mesh.cellVolume(c);
   const double total_volume = mesh.sum(volume);
   return total_volume > 0.0 ? mesh.sum(area) / total_volume : 0.0;
+}
+
+double narrowestExtentBetweenWalls(const std::array<double, 3>& box_lengths, const std::array<bool, 3>& dem_periodic) {
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (int d = 0; d < 3; ++d)
+    if (!dem_periodic[d]) narrowest = std::min(narrowest, box_lengths[d]);
+  return narrowest;
 }
 
 }  // namespace parcelflow::coupling

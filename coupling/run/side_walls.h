@@ -18,4 +18,8 @@ namespace parcelflow::coupling {
 double sideWallAreaPerVolume(const cfd::Mesh& mesh, const std::vector<cfd::BoundarySettings>& boundaries,
                              const cfd::Vec3& gravity, const std::array<bool, 3>& dem_periodic);
 
+// The box's smallest length along an axis that is not periodic for the DEM (parcels pass through the faces of
+// a periodic axis, so no wall bounds the bed there); infinity when every axis is periodic.
+double narrowestExtentBetweenWalls(const std::array<double, 3>& box_lengths, const std::array<bool, 3>& dem_periodic);
+
 }  // namespace parcelflow::coupling

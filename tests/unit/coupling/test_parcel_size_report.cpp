@@ -2,6 +2,8 @@
 // and a warning naming the ratio and the limit for each limit broken.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "parcel_size_report.h"
 
 namespace pc = parcelflow::coupling;
@@ -77,4 +79,9 @@ TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
   const auto periodic = pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed);
   ASSERT_EQ(periodic.size(), 1u);
   EXPECT_FALSE(mentions(periodic[0], "wall layer")) << periodic[0];
+  // every axis periodic (no walls to count parcels between): neither a count across nor its warning
+  bed.narrowest_extent = std::numeric_limits<double>::infinity();
+  const auto unbounded = pc::parcelSizeReport({0.05, 8.0, 0.025}, bed);
+  ASSERT_EQ(unbounded.size(), 1u);
+  EXPECT_FALSE(mentions(unbounded[0], "across")) << unbounded[0];
 }

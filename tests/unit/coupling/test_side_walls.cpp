@@ -1,8 +1,12 @@
 // sideWallAreaPerVolume on a 0.3 x 0.2 x 0.5 m box of 0.1 m cells, walls at x and y, inlet and outlet at z:
 // 2 / 0.3 + 2 / 0.2 per metre with gravity along -z; faces normal to an axis that is periodic for the parcels
-// and faces across gravity do not count. Any number of ranks.
+// and faces across gravity do not count. Any number of ranks. narrowestExtentBetweenWalls: the smallest
+// length along an axis that is not periodic for the parcels.
 #include <gtest/gtest.h>
 #include <mpi.h>
+
+#include <array>
+#include <cmath>
 
 #include "tests/unit/coupling/box_mesh.hpp"
 #include "side_walls.h"
@@ -35,4 +39,14 @@ TEST(SideWalls, AreaPerVolumeOfTheSideWalls) {
   // gravity along x: the x walls are floor and roof, z is inlet and outlet, the y walls remain
   EXPECT_NEAR(coupling::sideWallAreaPerVolume(mesh, walls, cfd::Vec3(-9.81, 0.0, 0.0), {false, false, false}),
               2 / 0.2, 1e-9);
+}
+
+// The Goldschmidt bed's box (0.15 x 0.015 x 0.3 m): its depth between walls, its width once the depth is periodic
+// for the parcels, nothing when every axis is.
+TEST(SideWalls, NarrowestExtentBetweenWalls) {
+  const std::array<double, 3> box{0.15, 0.015, 0.3};
+  EXPECT_EQ(coupling::narrowestExtentBetweenWalls(box, {false, false, false}), 0.015);
+  EXPECT_EQ(coupling::narrowestExtentBetweenWalls(box, {false, true, false}), 0.15);
+  EXPECT_EQ(coupling::narrowestExtentBetweenWalls(box, {true, true, false}), 0.3);
+  EXPECT_TRUE(std::isinf(coupling::narrowestExtentBetweenWalls(box, {true, true, true})));
 }

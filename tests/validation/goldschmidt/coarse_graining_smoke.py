@@ -69,7 +69,7 @@ def check_parcel_reports(root):
     for name, (largest, too_few_across) in expected.items():
         text = open(os.path.join(root, name, "run", "stdout.txt"), errors="replace").read()
         described = "parcelflow: coarse graining: largest parcel" in text
-        warned = "across the narrowest extent of the bed" in text and "limit 6" in text
+        warned = "across the narrowest extent of the bed between walls" in text and "limit 6" in text
         print(f"[measured] {name}: parcel report {'yes' if described else 'no'}, too-few-across warning "
               f"{'yes' if warned else 'no'}")
         if described != (largest is not None) or (largest and f"largest parcel {largest}" not in text):
