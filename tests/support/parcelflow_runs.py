@@ -57,14 +57,14 @@ def replace_in_file(path, replacements):
 
 
 def apply_test_stopping_criterion(settings):
-    """With PARCELFLOW_TEST_STOPPING_CRITERION=normalized in the environment, the case's pressure and momentum
-    solves stop by the normalized criterion (issue 30: the coupled tests rerun under it, as the gas tests'
-    *_normalized variants); unset, the case is left as it is."""
+    """With PARCELFLOW_TEST_STOPPING_CRITERION=strict or normalized in the environment, the case's pressure and
+    momentum solves stop by that criterion (issue 30: the coupled tests rerun under the strict one, the
+    default, to compare with normalized); unset, the case is left as it is."""
     criterion = os.environ.get("PARCELFLOW_TEST_STOPPING_CRITERION")
     if criterion is None:
         return
-    if criterion != "normalized":
-        fail(f"PARCELFLOW_TEST_STOPPING_CRITERION={criterion}: allowed is normalized")
+    if criterion not in ("strict", "normalized"):
+        fail(f"PARCELFLOW_TEST_STOPPING_CRITERION={criterion}: allowed is strict or normalized")
     solver = settings.setdefault("solver", {})
     for equation in ("pressure", "momentum"):
         solver.setdefault(equation, {})["criterion"] = criterion
