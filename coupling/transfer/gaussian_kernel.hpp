@@ -143,26 +143,23 @@ class GaussianKernel {
       walls[d][0] = 0.0;
       walls[d][1] = g.cells[d];
       if (!ownCellFluid) continue;
-      int cell[3] = {ic[0], ic[1], ic[2]};
-      double share = fluidShare(ic[0], ic[1], ic[2]);  // of the last fluid cell met
-      for (int m = 1; m <= r[d] && ic[d] - m >= 0; ++m) {
-        cell[d] = ic[d] - m;
-        const double next = fluidShare(cell[0], cell[1], cell[2]);
-        if (next <= 0.0) {
-          walls[d][0] = std::min(ic[d] - m + 1 + (1.0 - share), xi[d]);
-          break;
+      for (int side = 0; side < 2; ++side) {  // lower, then upper
+        const int step = side == 0 ? -1 : 1;
+        int cell[3] = {ic[0], ic[1], ic[2]};
+        double share = fluidShare(ic[0], ic[1], ic[2]);  // of the last fluid cell met
+        for (int m = 1; m <= r[d]; ++m) {
+          cell[d] = ic[d] + step * m;
+          if (cell[d] < 0 || cell[d] >= g.cells[d]) break;
+          const double next = fluidShare(cell[0], cell[1], cell[2]);
+          if (next <= 0.0) {
+            // the face between the last fluid cell and this one, moved back into that cell by its solid share
+            const double face = side == 0 ? cell[d] + 1 : cell[d];
+            const double wall = face - step * (1.0 - share);
+            walls[d][side] = side == 0 ? std::min(wall, xi[d]) : std::max(wall, xi[d]);
+            break;
+          }
+          share = next;
         }
-        share = next;
-      }
-      share = fluidShare(ic[0], ic[1], ic[2]);
-      for (int m = 1; m <= r[d] && ic[d] + m < g.cells[d]; ++m) {
-        cell[d] = ic[d] + m;
-        const double next = fluidShare(cell[0], cell[1], cell[2]);
-        if (next <= 0.0) {
-          walls[d][1] = std::max(ic[d] + m - 1 + share, xi[d]);
-          break;
-        }
-        share = next;
       }
     }
   }

@@ -229,13 +229,13 @@ TEST(Deposition, ParcelsWiderThanTheCellConserveVolumeAndActionEqualsReaction) {
   }
 }
 
-TEST(Deposition, ReflectingFacesDepositUniformCentresUniformly) {
-  // Parcel centres spread evenly over the whole box along x (100 per cell): with reflecting faces every
-  // cell receives the same volume (the images fill in what the faces cut off: int_0^L K(y-x) + K(y+x) dx
-  // is 1 for every y far from the other face), while truncating and renormalising piles volume into the
-  // cells next to the faces. Measured and asserted both ways, so that the test tells them apart.
-  MaskedGrid g = makeGrid({40, 3, 3}, false);
-  const int perCell = 100, n = 40 * perCell;
+namespace {
+
+// Parcel centres of volume 1 spread evenly along x over the fluid cells 0..fluidCells-1 of g's row (perCell per
+// cell, on the middle y and z), deposited with the cell_volume Gaussian: the volume each x column of fluid cells
+// receives.
+std::vector<double> volumePerColumn(const MaskedGrid& g, int fluidCells, int perCell, bool reflect) {
+  const int n = fluidCells * perCell;
   std::vector<double> pos;
   for (int p = 0; p < n; ++p) {
     pos.push_back(g.grid.origin[0] + (p + 0.5) / perCell * g.grid.spacing[0]);
@@ -244,23 +244,39 @@ TEST(Deposition, ReflectingFacesDepositUniformCentresUniformly) {
   }
   const std::vector<double> volume(n, 1.0);
   const double spacing[3] = {0.01, 0.02, 0.015};
-  double deviation[2];
-  for (const bool reflect : {true, false}) {
-    BoxStencils set;
-    buildBoxStencils(GaussianKernel(1.0, 2, spacing, true, 0.0, reflect), g.grid, fluidOf(g), n, pos.data(), set);
-    std::vector<double> box(set.boxSize(), 0.0);
-    deposit(set, 1, volume.data(), box.data());
-    const std::vector<double> cells = boxToLocal(g, set, 1, box);
-    std::vector<double> column(40, 0.0);
-    for (int c = 0; c < g.localSize; ++c) column[g.ijkOf[c][0]] += cells[c];
-    double worst = 0.0;
-    for (double v : column) worst = std::max(worst, std::abs(v / perCell - 1.0));
-    deviation[reflect ? 0 : 1] = worst;
-  }
-  std::printf("[measured] largest deviation of a cell from the mean: reflect %.2e, truncate %.2e\n", deviation[0],
-              deviation[1]);
-  EXPECT_LE(deviation[0], 1e-3);
-  EXPECT_GE(deviation[1], 1e-2);
+  BoxStencils set;
+  buildBoxStencils(GaussianKernel(1.0, 2, spacing, true, 0.0, reflect), g.grid, fluidOf(g), n, pos.data(), set);
+  std::vector<double> box(set.boxSize(), 0.0);
+  deposit(set, 1, volume.data(), box.data());
+  std::vector<double> column(g.grid.cells[0], 0.0);
+  for (int k = set.lo[2]; k < set.lo[2] + set.cells[2]; ++k)
+    for (int j = set.lo[1]; j < set.lo[1] + set.cells[1]; ++j)
+      for (int i = set.lo[0]; i < set.lo[0] + set.cells[0]; ++i)
+        if (g.active(i, j, k)) column[i] += box[set.boxIndex(i, j, k)];
+  return column;
+}
+
+// The largest |column / perCell - 1| over the first `fluidCells` columns.
+double largestDeviation(const std::vector<double>& column, int fluidCells, int perCell) {
+  double worst = 0.0;
+  for (int i = 0; i < fluidCells; ++i) worst = std::max(worst, std::abs(column[i] / perCell - 1.0));
+  return worst;
+}
+
+}  // namespace
+
+TEST(Deposition, ReflectingFacesDepositUniformCentresUniformly) {
+  // Parcel centres spread evenly over the whole box along x (100 per cell): with reflecting faces every
+  // cell receives the same volume (the images fill in what the faces cut off: int_0^L K(y-x) + K(y+x) dx
+  // is 1 for every y far from the other face), while truncating and renormalising piles volume into the
+  // cells next to the faces. Measured and asserted both ways, so that the test tells them apart.
+  const MaskedGrid g = makeGrid({40, 3, 3}, false);
+  const double reflect = largestDeviation(volumePerColumn(g, 40, 100, true), 40, 100);
+  const double truncate = largestDeviation(volumePerColumn(g, 40, 100, false), 40, 100);
+  std::printf("[measured] largest deviation of a cell from the mean: reflect %.2e, truncate %.2e\n", reflect,
+              truncate);
+  EXPECT_LE(reflect, 1e-3);
+  EXPECT_GE(truncate, 1e-2);
 }
 
 TEST(Deposition, ReflectingWallsInsideTheBoxDepositUniformCentresUniformly) {
@@ -268,39 +284,17 @@ TEST(Deposition, ReflectingWallsInsideTheBoxDepositUniformCentresUniformly) {
   // spread evenly over the fluid cells 0..29 deposit evenly up to that wall when it reflects; truncating piles
   // volume next to it as at a face.
   MaskedGrid g = makeGrid({40, 3, 3}, false);
-  const int fluidCells = 30, perCell = 100, n = fluidCells * perCell;
+  const int fluidCells = 30, perCell = 100;
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j)
       for (int i = fluidCells; i < 40; ++i) g.local[(static_cast<std::size_t>(k) * 3 + j) * 40 + i] = -1;
-  std::vector<double> pos;
-  for (int p = 0; p < n; ++p) {
-    pos.push_back(g.grid.origin[0] + (p + 0.5) / perCell * g.grid.spacing[0]);
-    pos.push_back(g.grid.cellCentre(1, 1));
-    pos.push_back(g.grid.cellCentre(2, 1));
-  }
-  const std::vector<double> volume(n, 1.0);
-  const double spacing[3] = {0.01, 0.02, 0.015};
   double deviation[2];
   for (const bool reflect : {true, false}) {
-    BoxStencils set;
-    buildBoxStencils(GaussianKernel(1.0, 2, spacing, true, 0.0, reflect), g.grid, fluidOf(g), n, pos.data(), set);
-    std::vector<double> box(set.boxSize(), 0.0);
-    deposit(set, 1, volume.data(), box.data());
-    std::vector<double> column(40, 0.0);
-    for (int k = 0; k < set.cells[2]; ++k)
-      for (int j = 0; j < set.cells[1]; ++j)
-        for (int i = 0; i < set.cells[0]; ++i) {
-          const int ci = set.lo[0] + i;
-          const double v = box[set.boxIndex(ci, set.lo[1] + j, set.lo[2] + k)];
-          if (g.active(ci, set.lo[1] + j, set.lo[2] + k)) column[ci] += v;
-        }
-    double worst = 0.0, total = 0.0;
-    for (int i = 0; i < 40; ++i) {
-      total += column[i];
-      if (i < fluidCells) worst = std::max(worst, std::abs(column[i] / perCell - 1.0));
-    }
-    EXPECT_NEAR(total, n, 1e-9 * n);  // nothing lands on the solid cells
-    deviation[reflect ? 0 : 1] = worst;
+    const std::vector<double> column = volumePerColumn(g, fluidCells, perCell, reflect);
+    double total = 0.0;
+    for (double v : column) total += v;
+    EXPECT_NEAR(total, fluidCells * perCell, 1e-9 * fluidCells * perCell);  // nothing lands on the solid cells
+    deviation[reflect ? 0 : 1] = largestDeviation(column, fluidCells, perCell);
   }
   std::printf("[measured] inside wall, largest deviation of a cell from the mean: reflect %.2e, truncate %.2e\n",
               deviation[0], deviation[1]);

@@ -84,6 +84,26 @@ void offCentreParcel(const MaskedGrid& g, double (&x)[3]) {
     x[d] = g.grid.cellCentre(d, kOffCentreCell[d]) + kOffCentreShift[d] * g.grid.spacing[d];
 }
 
+// The stencil's weights of the cell_volume Gaussian (h = cbrt of kTestSpacing's cell) against the Gaussian of the
+// parcel at x plus, on the cells imageLo..imageHi along x, that of its image mirrored to x = image, computed from
+// the distances and renormalised over the stencil's cells.
+void expectParcelAndImageAlongX(const MaskedGrid& g, const Stencil& s, const double (&x)[3], double image,
+                                int imageLo, int imageHi) {
+  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);
+  std::vector<double> expected(s.size);
+  double total = 0.0;
+  for (int e = 0; e < s.size; ++e) {
+    double r2 = 0.0;
+    for (int d = 1; d < 3; ++d) r2 += std::pow(g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d], 2);
+    const int ix = g.ijkOf[s.cell[e]][0];
+    const double cx = g.grid.cellCentre(0, ix);
+    expected[e] = std::exp(-(r2 + std::pow(cx - x[0], 2)) / (h * h)) +
+                  (ix >= imageLo && ix <= imageHi ? std::exp(-(r2 + std::pow(cx - image, 2)) / (h * h)) : 0.0);
+    total += expected[e];
+  }
+  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+}
+
 }  // namespace
 
 TEST(KernelWeights, SumToOneOnActiveCellsEverywhereIncludingWallsAndInsideCorner) {
@@ -258,7 +278,6 @@ TEST(KernelWeights, ReflectingFacesAddTheMirrorImagesWeights) {
   // (no cell of the window beyond a face) the weights are those of the truncating kernel exactly.
   const MaskedGrid g = makeGrid({24, 20, 16}, false);
   const GaussianKernel reflecting(1.0, 2, kTestSpacing, true, 0.0, true), truncating(1.0, 2, kTestSpacing);
-  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);
   double x[3];
   offCentreParcel(g, x);
   Stencil inner, innerTruncated;
@@ -272,19 +291,8 @@ TEST(KernelWeights, ReflectingFacesAddTheMirrorImagesWeights) {
   Stencil s;
   ASSERT_EQ(stencilOf(reflecting, g.grid, x, g, s), StencilResult::ok);
   ASSERT_EQ(s.size, 3 * 5 * 5);  // cells 0..2 in x: cells -1 and -2 folded onto 0 and 1
-  std::vector<double> expected(s.size);
-  double total = 0.0;
-  for (int e = 0; e < s.size; ++e) {
-    double r2 = 0.0;
-    for (int d = 1; d < 3; ++d) r2 += std::pow(g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d], 2);
-    const int ix = g.ijkOf[s.cell[e]][0];
-    const double cx = g.grid.cellCentre(0, ix);
-    // the window is +-2 cells around cell 0: its cells -1 and -2 are the images of cells 0 and 1
-    expected[e] = std::exp(-(r2 + std::pow(cx - x[0], 2)) / (h * h)) +
-                  (ix <= 1 ? std::exp(-(r2 + std::pow(cx - image, 2)) / (h * h)) : 0.0);
-    total += expected[e];
-  }
-  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+  // the window is +-2 cells around cell 0: its cells -1 and -2 are the images of cells 0 and 1
+  expectParcelAndImageAlongX(g, s, x, image, 0, 1);
 }
 
 TEST(KernelWeights, ReflectingWallsInsideTheBoxAddTheMirrorImagesWeights) {
@@ -294,7 +302,6 @@ TEST(KernelWeights, ReflectingWallsInsideTheBoxAddTheMirrorImagesWeights) {
   // row (i = 5) is fluid throughout, so y stays the Gaussian.
   const MaskedGrid g = makeGrid({12, 10, 8}, true);
   const GaussianKernel reflecting(1.0, 2, kTestSpacing, true, 0.0, true);
-  const double h = std::cbrt(kTestSpacing[0] * kTestSpacing[1] * kTestSpacing[2]);
   const double face = g.grid.origin[0] + 6 * g.grid.spacing[0];
   const double x[3] = {face - 0.3 * g.grid.spacing[0], g.grid.cellCentre(1, 7) + 0.2 * g.grid.spacing[1],
                        g.grid.cellCentre(2, 4) - 0.1 * g.grid.spacing[2]};
@@ -302,19 +309,8 @@ TEST(KernelWeights, ReflectingWallsInsideTheBoxAddTheMirrorImagesWeights) {
   Stencil s;
   ASSERT_EQ(stencilOf(reflecting, g.grid, x, g, s), StencilResult::ok);
   ASSERT_EQ(s.size, 3 * 5 * 5);  // cells 3..5 in x
-  std::vector<double> expected(s.size);
-  double total = 0.0;
-  for (int e = 0; e < s.size; ++e) {
-    double r2 = 0.0;
-    for (int d = 1; d < 3; ++d) r2 += std::pow(g.grid.cellCentre(d, g.ijkOf[s.cell[e]][d]) - x[d], 2);
-    const int ix = g.ijkOf[s.cell[e]][0];
-    EXPECT_LE(ix, 5);
-    const double cx = g.grid.cellCentre(0, ix);
-    expected[e] = std::exp(-(r2 + std::pow(cx - x[0], 2)) / (h * h)) +
-                  (ix >= 4 ? std::exp(-(r2 + std::pow(cx - image, 2)) / (h * h)) : 0.0);
-    total += expected[e];
-  }
-  for (int e = 0; e < s.size; ++e) EXPECT_NEAR(s.weight[e], expected[e] / total, 1e-14);
+  for (int e = 0; e < s.size; ++e) EXPECT_LE(g.ijkOf[s.cell[e]][0], 5);
+  expectParcelAndImageAlongX(g, s, x, image, 4, 5);
 }
 
 TEST(KernelWeights, ReflectingFacesFoldAWindowWiderThanTheBox) {
