@@ -121,12 +121,12 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
     report_.pressurePreconditionerBuilt = pPrecond_.builtThisStep();
   }
   // The residual of this equation is the continuity residual the corrected fluxes keep, cell by cell (phi
-  // = phiHbyA - coeff dp): its 1-norm over the through-flow is the step's continuity error, so the
-  // normalized criterion bounds that error by its tolerance. The through-flow is taken from the fluxes
+  // = phiHbyA - coeff dp): its 1-norm over the step's gas flow is the step's continuity error, so the
+  // normalized criterion bounds that error by its tolerance. The through-flow part is taken from the fluxes
   // before this solve (the previous corrector's or step's, with the inlets at the new time level); the
   // reported error divides by the one after it, which differs by this solve's change of the outlet fluxes.
   const SolveStats stats =
-      pSolver_->pcg(pRgh_, rhs, stoppingRule(settings_.solver.pressure, lastCorrector, throughFlow()));
+      pSolver_->pcg(pRgh_, rhs, stoppingRule(settings_.solver.pressure, lastCorrector, flowScale(dt)));
   pPrecond_.recordIterations(stats.iterations);
   report_.pressureIterations += stats.iterations;
   report_.unconvergedSolves += stats.converged ? 0 : 1;
@@ -169,12 +169,15 @@ double GasSolver::addPlenumPressure(const ScalarField& plateCoeff, double inflow
   return plenum;
 }
 
-double GasSolver::throughFlow() const {
+double GasSolver::flowScale(double dt) const {
   const Mesh& m = *mesh_;
-  double local = 0.0;
-  for (int b = 0; b < m.nBoundaryFaces(); ++b) local += std::abs(phiB_[b]);
-  for (int c = 0; c < m.nOwnedCells(); ++c) local += injection_[c] * m.cellVolume(c);
-  return m.sum(local);
+  double through = 0.0, displaced = 0.0;
+  for (int b = 0; b < m.nBoundaryFaces(); ++b) through += std::abs(phiB_[b]);
+  for (int c = 0; c < m.nOwnedCells(); ++c) {
+    through += injection_[c] * m.cellVolume(c);
+    displaced += m.cellVolume(c) * std::abs(alpha_[c] - alphaOld_[c]) / dt;
+  }
+  return std::max(m.sum(through), m.sum(displaced));
 }
 
 void GasSolver::finishStep(double dt) {
@@ -202,7 +205,7 @@ void GasSolver::finishStep(double dt) {
   report_.cfl = m.max(cfl);
   report_.boundaryOutflow = m.sum(outflow);
   report_.injectedFlow = m.sum(injected);
-  report_.continuityError = m.sum(continuity) / std::max(throughFlow(), 1e-300);
+  report_.continuityError = m.sum(continuity) / std::max(flowScale(dt), 1e-300);
 
   for (int c = 0; c < m.nLocalCells(); ++c) {
     p_[c] = pRef_ + pRgh_[c] + rho_ * g_.dot(m.cellCentre(c));

@@ -35,6 +35,7 @@ void writeColumn(WallRepresentation walls, const std::string& prefix) {
   s.boundaries = {{"zmin", BoundaryType::VelocityInlet, Vec3(0, 0, 0.05), 0.0},
                   {"zmax", BoundaryType::PressureOutlet, Vec3::Zero(), 1e5},
                   {"walls", BoundaryType::NoSlipWall, Vec3::Zero(), 0.0}};
+  s.solver.pressure.criterion = s.solver.momentum.criterion = StoppingCriterion::Strict;
   s.solver.pressure.relTolerance = 1e-14;
   s.solver.momentum.relTolerance = 1e-14;
   GasSolver gas(s, MPI_COMM_WORLD);
