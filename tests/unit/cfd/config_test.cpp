@@ -203,8 +203,8 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
               {"max", "larger than min"});
 }
 
-// solver.pressure / solver.momentum: criterion normalized (the default: tolerance on the normalized residual,
-// rel_tol, final_rel_tol) or strict (|r|_2 <= tolerance |b|_2), each tolerance key only with its criterion.
+// solver.pressure / solver.momentum: criterion strict (the default, |r|_2 <= tolerance |b|_2) or normalized
+// (tolerance on the normalized residual, rel_tol, final_rel_tol), each tolerance key only with its criterion.
 TEST(GasConfig, StoppingCriterionKeys) {
   const std::string pressure = "pressure: {tolerance: 1.0e-10, max_iterations: 500, preconditioner: block_cholesky}";
   const std::string momentum = "momentum: {tolerance: 1.0e-9}";
