@@ -118,10 +118,13 @@ class GasSolver {
   void solveMomentum();
   // gas_solver_pressure.cpp
   void correctPressure(double dt, bool firstCorrector, bool lastCorrector);
-  // The gas flow a step moves [m^3/s], what its continuity error is relative to: the larger of the flow
-  // through the domain (sum |phi_b| over boundary faces + injected flow, of the current fluxes) and the gas
-  // the changing gas fraction displaces (sum V |alpha - alpha_old| / dt). A bed settling in a closed column
-  // has only the second; a bubbling bed under its inflow mostly the first.
+  // The gas flow a step moves [m^3/s], what its continuity error is relative to: the largest of the flow
+  // through the domain (sum |phi_b| over boundary faces + injected flow, of the current fluxes), the gas
+  // the changing gas fraction displaces (sum V |alpha - alpha_old| / dt) and the continuity imbalance the
+  // step's pressure solve starts from (stepImbalance_). A bed settling in a closed column has only the
+  // second; a bubbling bed under its inflow mostly the first; a bed that starts to fall in a closed column
+  // only the third (its parcels' drag drives gas that the pressure must stop, nothing passes or is
+  // displaced yet).
   double flowScale(double dt) const;
   // Distributor inlets: adds the response to the plenum pressure P (solved with the matrix of this step) so
   // that the plates let in exactly their flow; returns P (p_rgh) and counts the extra solve's iterations.
@@ -135,6 +138,9 @@ class GasSolver {
   std::vector<PatchCondition> patch_;
   std::vector<InletRegionCells> inletRegions_;
   ScalarField alpha_, alphaOld_, beta_, injection_;
+  // |continuity residual|_1 of the fluxes with the step's predicted velocity and the previous pressure
+  // [m^3/s]: the first PISO corrector's initial pressure residual, set there each step.
+  double stepImbalance_ = 0.0;
   VectorField betaUs_, injectionMomentum_, U_, Uold_;
   // p = pRef_ + pRgh_ + rho g.x: the solved part pRgh_ stays small next to an absolute outlet pressure
   // (1e5 Pa), so tight solver tolerances still resolve the cell-to-cell differences that drive u.

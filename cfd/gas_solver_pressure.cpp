@@ -119,6 +119,7 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
   if (firstCorrector) {
     pSolver_ = std::make_unique<KrylovSolver>(*pEqn_, settings_.solver.pressure, pPrecond_.forStep(*pEqn_));
     report_.pressurePreconditionerBuilt = pPrecond_.builtThisStep();
+    stepImbalance_ = pSolver_->residualOneNorm(pRgh_, rhs);
   }
   // The residual of this equation is the continuity residual the corrected fluxes keep, cell by cell (phi
   // = phiHbyA - coeff dp): its 1-norm over the step's gas flow is the step's continuity error, so the
@@ -177,7 +178,7 @@ double GasSolver::flowScale(double dt) const {
     through += injection_[c] * m.cellVolume(c);
     displaced += m.cellVolume(c) * std::abs(alpha_[c] - alphaOld_[c]) / dt;
   }
-  return std::max(m.sum(through), m.sum(displaced));
+  return std::max({m.sum(through), m.sum(displaced), stepImbalance_});
 }
 
 void GasSolver::finishStep(double dt) {

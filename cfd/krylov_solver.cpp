@@ -86,6 +86,12 @@ void KrylovSolver::residual(ScalarField& x, const ScalarField& b, ScalarField& r
   for (int c = 0; c < matrix_.mesh().nOwnedCells(); ++c) r[c] = b[c] - r[c];
 }
 
+double KrylovSolver::residualOneNorm(ScalarField& x, const ScalarField& b) const {
+  ScalarField r(matrix_.mesh().nLocalCells(), 0.0);
+  residual(x, b, r);
+  return norm(r, true);
+}
+
 SolveStats KrylovSolver::pcg(ScalarField& x, const ScalarField& b, const StoppingRule& rule) const {
   const int nLocal = matrix_.mesh().nLocalCells(), nOwned = matrix_.mesh().nOwnedCells();
   const Preconditioner& precond = *precond_;

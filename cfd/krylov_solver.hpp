@@ -53,6 +53,8 @@ class KrylovSolver {
   // With the settings' rule (stoppingRule(settings)).
   SolveStats pcg(ScalarField& x, const ScalarField& b) const;
   SolveStats bicgstab(ScalarField& x, const ScalarField& b) const;
+  // |b - A x|_1 over all ranks (collective; refreshes x's ghosts).
+  double residualOneNorm(ScalarField& x, const ScalarField& b) const;
 
  private:
   // The norm a rule measures residuals with, what it divides them by, and where the solve stops.

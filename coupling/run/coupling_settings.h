@@ -44,7 +44,7 @@ struct KernelSettings {
 // shipped cases reach (coupling/README.md, "Blow-up guards").
 struct GuardSettings {
   double max_cfl = 1000.0;              // gas Courant number of a step
-  double max_continuity_error = 1.0;    // StepReport::continuityError of a step (relative to the through-flow)
+  double max_continuity_error = 1.0;    // StepReport::continuityError of a step (relative to its gas flow)
   double max_parcel_loss = 0.1;         // parcels lost in one coupling step, as a fraction of the initial count
 };
 

@@ -58,7 +58,8 @@ def replace_in_file(path, replacements):
 
 def apply_test_stopping_criterion(settings):
     """With PARCELFLOW_TEST_STOPPING_CRITERION=strict or normalized in the environment, the case's pressure and
-    momentum solves stop by that criterion (issue 30: the coupled tests rerun under each to compare them); unset, the case is left as it is."""
+    momentum solves stop by that criterion (issue 30: the coupled tests rerun under the strict one to compare
+    with normalized, the default); unset, the case is left as it is."""
     criterion = os.environ.get("PARCELFLOW_TEST_STOPPING_CRITERION")
     if criterion is None:
         return

@@ -122,7 +122,7 @@ void compare(const std::string& label, const GasSettings& settings, const BedSha
                 label.c_str(), blockIc.msPerStep / amg.msPerStep, diff / (hi + lo));
 }
 
-// The preconditioner and wall comparisons solve by the strict criterion whatever the default, as
+// The preconditioner and wall comparisons solve by the strict criterion (the default until 2026-12-05), as
 // their tables in cfd/README.md were measured; compareCriteria sets each criterion itself.
 void solveStrictly(GasSettings& s) {
   s.solver.pressure.criterion = s.solver.momentum.criterion = StoppingCriterion::Strict;

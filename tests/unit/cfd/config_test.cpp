@@ -106,9 +106,11 @@ TEST(GasConfig, ValidFileParses) {
   EXPECT_EQ(s.solver.pisoCorrectors, 3);
   EXPECT_EQ(s.solver.convection, ConvectionScheme::Upwind);
   EXPECT_EQ(s.solver.pressure.preconditioner, PreconditionerType::BlockCholesky);
-  // No criterion given: the default, strict, whose tolerance the key sets.
-  EXPECT_EQ(s.solver.pressure.criterion, StoppingCriterion::Strict);
-  EXPECT_EQ(s.solver.pressure.relTolerance, 1e-10);
+  // No criterion given: the default, normalized, whose tolerance the key sets.
+  EXPECT_EQ(s.solver.pressure.criterion, StoppingCriterion::Normalized);
+  EXPECT_EQ(s.solver.pressure.tolerance, 1e-10);
+  EXPECT_EQ(s.solver.momentum.criterion, StoppingCriterion::Normalized);
+  EXPECT_EQ(s.solver.momentum.tolerance, 1e-9);
   // The geometry: column, exit tube, baffle cut out.
   EXPECT_TRUE(s.geometry.isFluid(Vec3(0.1, 0.1, 0.9)));
   EXPECT_FALSE(s.geometry.isFluid(Vec3(0.01, 0.01, 0.9)));
@@ -203,8 +205,8 @@ TEST(GasConfig, OutOfRangeValuesAreNamed) {
               {"max", "larger than min"});
 }
 
-// solver.pressure / solver.momentum: criterion strict (the default, |r|_2 <= tolerance |b|_2) or normalized
-// (tolerance on the normalized residual, rel_tol, final_rel_tol), each tolerance key only with its criterion.
+// solver.pressure / solver.momentum: criterion normalized (the default: tolerance on the normalized residual,
+// rel_tol, final_rel_tol) or strict (|r|_2 <= tolerance |b|_2), each tolerance key only with its criterion.
 TEST(GasConfig, StoppingCriterionKeys) {
   const std::string pressure = "pressure: {tolerance: 1.0e-10, max_iterations: 500, preconditioner: block_cholesky}";
   const std::string momentum = "momentum: {tolerance: 1.0e-9}";
@@ -237,7 +239,7 @@ TEST(GasConfig, StoppingCriterionKeys) {
               {"solver.pressure.rel_tol", "only allowed with criterion: normalized"});
   expectError(errorOf(replaced(pressure, "pressure: {criterion: strict, final_rel_tol: 0}")),
               {"solver.pressure.final_rel_tol", "only allowed with criterion: normalized"});
-  expectError(errorOf(replaced(pressure, "pressure: {criterion: normalized, absolute_tolerance: 1.0e-20}")),
+  expectError(errorOf(replaced(pressure, "pressure: {absolute_tolerance: 1.0e-20}")),
               {"solver.pressure.absolute_tolerance", "only allowed with criterion: strict"});
   expectError(errorOf(replaced(pressure, "pressure: {criterion: normalized, rel_tol: 1}")),
               {"solver.pressure.rel_tol = 1", "[0, 1)"});
