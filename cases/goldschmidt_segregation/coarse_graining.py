@@ -6,6 +6,7 @@ dp/(W/A) over the same window, the run times, and what each bed is made of (parc
 
 Variants (atom types 1 and 2 are the small and the large beads in all of them):
   fine         one bead per parcel: the case as shipped
+  np3.375_linear  3.375 beads per parcel (l = 1.5): parcels of 2.25 and 3.75 mm, between the beads and np 8
   np8_linear   8 beads per parcel (fix parcel mode constant_np np 8 scaling linear): parcels of 3 and 5 mm,
                1/8 of the parcels; the beads' contact values scaled by l = 2
   np27_linear  27 beads per parcel: parcels of 4.5 and 7.5 mm, l = 3 (for wider beds: cases/coarse_graining/
@@ -19,6 +20,10 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
                (0.97 -> 0.939 at l = 2): parcels collide 1/l as often per unit mass, so this keeps the
                collisional dissipation per unit mass (kinetic theory; coarse-graining.md); parcel-wall
                contacts keep e (their dissipation per wall area does not depend on the parcel size)
+  np8_linear_dissipation_friction  np8_linear_dissipation with the parcel-parcel friction l mu (0.10 -> 0.20):
+               the sliding losses of a collision grow about as mu, so this keeps the frictional share of the
+               dissipation per unit mass as well (without friction np 8 stops bubbling: README.md); the
+               walls keep their friction. It overrides a --set of liggghts.variables.bead_friction
 Every coarse bed has the fine bed's solid mass (to within a parcel), 50/50 by mass. Larger spheres fit less
 densely into the insertion region (fix insert/pack places them at random without overlap, and a 5 mm sphere
 leaves its centre 7.4 mm of the 12.4 mm wide slot), so the region is made taller until the solid volume over
@@ -26,12 +31,12 @@ the volume the centres of the largest parcels can reach is the fine bed's; the f
 its terminal velocity, the filling lasts as long per metre of region height and the free settling as long
 in seconds as in the fine bed.
 
-DEM step: gas_step / n, n the smallest whole number that gives every variant at least STEPS_PER_CONTACT DEM
+DEM step: gas_step / n, n the smallest whole number that gives every variant at least --steps-per-contact DEM
 steps per contact of two parcels (t_c = pi/sqrt(kn/m_eff), parcelflow's check, which refuses fewer than 10);
 11 gives the shipped case's step (gas step / 12). The gas step is the case's for all variants.
 
 Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start S] [--ranks N] [--jobs J]
-                          [--set KEY=VALUE ...]
+                          [--set KEY=VALUE ...] [--steps-per-contact N]
                           [--mpirun CMD] [VARIANT ...]
   --case DIR   the fine bed: a folder like this one (default); e.g. a copy with another width or bead count
   --end T      coupled time of every run [s] (default 5); statistics over times in [S, T], --start S (default 1)
@@ -40,10 +45,12 @@ Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start
                "mpirun --bind-to none": Open MPI binds every 1-rank run to the same first core)
   --set KEY=VALUE  sets a key of the case.yaml copies (dotted path, VALUE in YAML), for every variant, e.g.
                --set coupling.kernel.boundary=reflect --set coupling.kernel.parcel_scale=2
+  --steps-per-contact N  the DEM step rule's N (default 11; 22 halves every variant's DEM step, the control
+               of whether the scaled contacts are resolved finely enough)
   Each variant runs in OUTPUT_ROOT/VARIANT/ (case copy in case/, run in run/). A variant whose run finished
   with the same case settings, --end and --ranks is not run again, so the script can be called again to
   add variants or to rebuild the table. Without VARIANT names: the Goldschmidt comparison, DEFAULT_VARIANTS
-  (np27_linear and np8_linear_dissipation by name only). The table goes to stdout and to
+  (np3.375_linear, np27_linear and the np8_linear_dissipation variants by name only). The table goes to stdout and to
   OUTPUT_ROOT/coarse_graining.csv.
 """
 import argparse
@@ -69,6 +76,7 @@ DENSITY = 2526.0                  # kg/m3, both classes
 BEAD_DIAMETERS = (1.5e-3, 2.5e-3)  # types 1 and 2
 SPRING = 100.0                    # kn of every type pair [N/m]
 RESTITUTION = 0.97                # every type pair
+BEAD_FRICTION = 0.10              # bead-bead (variable bead_friction)
 FILL_TERMINAL_VELOCITY = 0.3      # m/s of the filling's viscous force, both classes
 FREE_STEPS = 1000                 # free settling steps after the filling (at the case's DEM step)
 FINE_PARCEL_ARGS = "mode constant_np np 1 scaling none"
@@ -83,11 +91,15 @@ STEPS_PER_CONTACT = 11
 INSERTION_ROOM = {"d2.5mm_linear": 1.15}
 
 # Variants whose parcel-parcel restitution keeps the fine bed's collisional dissipation per unit mass.
-KEEP_DISSIPATION = {"np8_linear_dissipation"}
+KEEP_DISSIPATION = {"np8_linear_dissipation", "np8_linear_dissipation_friction"}
+# Variants whose parcel-parcel friction is l times the beads': the frictional share of the dissipation too.
+SCALE_FRICTION = {"np8_linear_dissipation_friction"}
 
 # name: (description, parcel diameters of types 1 and 2 [m], fix parcel mode, scaling)
 VARIANTS = {
     "fine": ("one bead per parcel (the case as shipped)", BEAD_DIAMETERS, "constant_np", "none"),
+    "np3.375_linear": ("3.375 beads per parcel: 2.25 and 3.75 mm parcels (l = 1.5), scaling linear",
+                       tuple(1.5 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np8_linear": ("8 beads per parcel: 3 and 5 mm parcels, scaling linear",
                    tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np27_linear": ("27 beads per parcel: 4.5 and 7.5 mm parcels, scaling linear",
@@ -101,6 +113,8 @@ VARIANTS = {
                       (BEAD_DIAMETERS[1], BEAD_DIAMETERS[1]), "constant_diameter", "linear"),
     "np8_linear_dissipation": ("np8_linear with parcel-parcel restitution 1 - e'^2 = l (1 - e^2)",
                                tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "np8_linear_dissipation_friction": ("np8_linear_dissipation with parcel-parcel friction l mu",
+                                        tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
 }
 
 
@@ -129,7 +143,8 @@ def damping_matrix(masses, parcel_restitution=RESTITUTION):
 class Plan:
     """What one variant runs: its parcels, DEM step and LIGGGHTS variables, for a fine bed of nbeads."""
 
-    def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, depth, height, fill_top):
+    def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, depth, height, fill_top,
+                 steps_per_contact=STEPS_PER_CONTACT):
         self.name = name
         self.description, self.diameters, self.mode, self.scaling = VARIANTS[name]
         self.masses = [sphere_mass(d) for d in self.diameters]
@@ -140,7 +155,7 @@ class Plan:
         # the kn of each type with itself in force, as parcelflow's contact-time check reads it
         kn = [SPRING * (D / d if self.scaling == "linear" else 1.0) for D, d in zip(self.diameters, BEAD_DIAMETERS)]
         self.contact_time = min(math.pi / math.sqrt(k / (m / 2)) for k, m in zip(kn, self.masses))
-        steps = math.ceil(STEPS_PER_CONTACT * gas_step / self.contact_time - 1e-9)
+        steps = math.ceil(steps_per_contact * gas_step / self.contact_time - 1e-9)
         self.dem_step = gas_step / steps
         self.steps_per_gas_step = steps
         self.fill_top = self.insertion_top(width, depth, height, fill_top)
@@ -180,6 +195,8 @@ class Plan:
             l = self.diameters[0] / BEAD_DIAMETERS[0]
             restitution = math.sqrt(1 - l * (1 - RESTITUTION ** 2))
             variables["damping"] = damping_matrix([sphere_mass(d) for d in BEAD_DIAMETERS], restitution)
+        if self.name in SCALE_FRICTION:
+            variables["bead_friction"] = f"{self.diameters[0] / BEAD_DIAMETERS[0] * BEAD_FRICTION:.6g}"
         return variables
 
 
@@ -201,7 +218,8 @@ def check_script(script):
     bead_masses = [sphere_mass(d) for d in BEAD_DIAMETERS]
     expected = {"small_radius": BEAD_DIAMETERS[0] / 2, "large_radius": BEAD_DIAMETERS[1] / 2,
                 "fill_drag": bead_masses[0] * GRAVITY / FILL_TERMINAL_VELOCITY,
-                "fill_drag_large_factor": bead_masses[1] / bead_masses[0], "free_steps": FREE_STEPS}
+                "fill_drag_large_factor": bead_masses[1] / bead_masses[0], "free_steps": FREE_STEPS,
+                "bead_friction": BEAD_FRICTION}
     problems = []
     for name, value in expected.items():
         if name not in defaults or abs(float(defaults[name]) / value - 1) > 1e-3:
@@ -329,6 +347,7 @@ def main():
     p.add_argument("--jobs", type=int, default=1)
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE")
+    p.add_argument("--steps-per-contact", type=float, default=STEPS_PER_CONTACT)
     args = p.parse_intermixed_args()
     args.case = os.path.abspath(args.case)
     args.root = os.path.abspath(args.root)
@@ -361,7 +380,8 @@ def main():
         sys.exit(f"the bed's depth {depth:g} m (liggghts.variables.depth) differs from mesh.lengths[1] "
                  f"{config['mesh']['lengths'][1]:g} m")
     plans = [Plan(n, int(variables["nbeads"]), times["gas_step"], times["dem_step"], int(variables["settle_steps"]),
-                  float(variables["width"]), depth, float(variables["height"]), float(variables["fill_top"]))
+                  float(variables["width"]), depth, float(variables["height"]), float(variables["fill_top"]),
+                  args.steps_per_contact)
              for n in names]
     for plan in plans:
         print(f"{plan.name}: {plan.parcels} parcels of {plan.diameters[0] * 1e3:g} / {plan.diameters[1] * 1e3:g} mm, "
