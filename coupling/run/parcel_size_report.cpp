@@ -52,6 +52,17 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                            "they stand for, and such a bed fluidized later than its particles (the Goldschmidt "
                            "bed's 5 mm parcels, 3 across); use smaller parcels",
                            across, 1e3 * D, 1e3 * reach.narrowest_extent, kParcelsAcrossTheNarrowestExtent));
+  const double length_ratio = std::cbrt(sizes.largest_np);  // the largest D / dp
+  if (sizes.largest_dp > sizes.smallest_dp * (1.0 + 1e-6) && length_ratio > kMixtureLengthRatio * (1.0 + 1e-9))
+    lines.push_back(formatNumbers("parcelflow: warning: the parcels stand for particles of %.4g to %.4g mm (a size "
+                                  "mixture) at up to l = D / dp = %.3g (limit %.3g): ",
+                                  1e3 * sizes.smallest_dp, 1e3 * sizes.largest_dp, length_ratio, kMixtureLengthRatio) +
+                    "coarse-grained size mixtures segregated by size more than their particles in the measured bed "
+                    "(the Goldschmidt beads with a periodic depth, over 10-20 s: beads -0.001, l = 1.5 0.030, l = 2 "
+                    "0.774); where the classes' mixing matters, use parcels of at most l = " +
+                    cfd::shortNumber(kMixtureLengthRatio) +
+                    " or check against a fine run (cases/goldschmidt_segregation/README.md, \"Coarse graining: "
+                    "causes\")");
   return lines;
 }
 

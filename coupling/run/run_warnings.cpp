@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <utility>
 
 namespace parcelflow::coupling {
@@ -68,16 +69,20 @@ void RunWarnings::checkOutsideMesh(const ParcelBatch& batch, const std::vector<l
 }
 
 void RunWarnings::reportParcelSizes(const ParcelBatch& batch) {
-  double largest[3] = {0.0, 0.0, 0.0};  // D, np, D - dp
+  // D, np, D - dp, dp and -dp (the smallest dp), all reduced by one maximum
+  double largest[5] = {0.0, 0.0, 0.0, 0.0, -std::numeric_limits<double>::max()};
   for (std::size_t p = 0; p < batch.size; ++p) {
     const double D = batch.dp[p] * std::cbrt(batch.np[p]);
     largest[0] = std::max(largest[0], D);
     largest[1] = std::max(largest[1], batch.np[p]);
     largest[2] = std::max(largest[2], D - batch.dp[p]);
+    largest[3] = std::max(largest[3], batch.dp[p]);
+    largest[4] = std::max(largest[4], -batch.dp[p]);
   }
-  MPI_Allreduce(MPI_IN_PLACE, largest, 3, MPI_DOUBLE, MPI_MAX, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, largest, 5, MPI_DOUBLE, MPI_MAX, comm_);
   if (rank_ != 0) return;
-  for (const std::string& line : parcelSizeReport({largest[0], largest[1], largest[2]}, kernel_reach_))
+  const ParcelSizes sizes{largest[0], largest[1], largest[2], -largest[4], largest[3]};
+  for (const std::string& line : parcelSizeReport(sizes, kernel_reach_))
     std::printf("%s\n", line.c_str());
 }
 

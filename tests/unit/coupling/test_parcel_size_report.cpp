@@ -85,3 +85,21 @@ TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
   ASSERT_EQ(unbounded.size(), 1u);
   EXPECT_FALSE(mentions(unbounded[0], "across")) << unbounded[0];
 }
+
+TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
+  // the Goldschmidt beads as np 8 parcels in the periodic-depth bed: 1.5 and 2.5 mm beads, l = 2
+  pc::KernelReach periodic = kGoldschmidt;
+  periodic.parcel_scale = 2.0;
+  periodic.narrowest_extent = 0.15;
+  const auto lines = pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_TRUE(mentions(lines[1], "particles of 1.5 to 2.5 mm (a size mixture) at up to l = D / dp = 2 (limit 1.5)"))
+      << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "use parcels of at most l = 1.5")) << lines[1];
+  // np 3.375 (l = 1.5), which remixed as the beads do: within the limit
+  EXPECT_EQ(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic).size(), 1u);
+  // one particle size in parcels: no mixture warning
+  EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0025, 0.0025}, periodic).size(), 1u);
+  // a mixture of single particles: no report at all
+  EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0015, 0.0025}, periodic).empty());
+}

@@ -63,19 +63,23 @@ def main():
 def check_parcel_reports(root):
     """parcelflow's start-up report on the parcels (coupling/run/parcel_size_report.h), as each run printed it:
     none for single beads; the largest parcel for every coarse bed; the warning of fewer than 6 parcels across
-    the 15 mm depth for the 5 mm parcels (3 across) and not for the 2.5 mm ones (6 across)."""
+    the 15 mm depth for the 5 mm parcels (3 across) and not for the 2.5 mm ones (6 across); the warning on
+    coarse-grained size mixtures for every coarse bed (each stands for the 1.5 and 2.5 mm beads)."""
     expected = {"fine": (None, False), "np8_linear": ("D = 5 mm", True), "d5mm_none": ("D = 5 mm", True),
                 "d5mm_linear": ("D = 5 mm", True), "d2.5mm_linear": ("D = 2.5 mm", False)}
     for name, (largest, too_few_across) in expected.items():
         text = open(os.path.join(root, name, "run", "stdout.txt"), errors="replace").read()
         described = "parcelflow: coarse graining: largest parcel" in text
         warned = "across the narrowest extent of the bed between walls" in text and "limit 6" in text
+        mixture = "particles of 1.5 to 2.5 mm (a size mixture)" in text
         print(f"[measured] {name}: parcel report {'yes' if described else 'no'}, too-few-across warning "
-              f"{'yes' if warned else 'no'}")
+              f"{'yes' if warned else 'no'}, size-mixture warning {'yes' if mixture else 'no'}")
         if described != (largest is not None) or (largest and f"largest parcel {largest}" not in text):
             fail(f"{name}: the start-up report on the parcels is not what it must be (expected {largest})")
         if warned != too_few_across:
             fail(f"{name}: the warning of too few parcels across the bed is {'there' if warned else 'missing'}")
+        if mixture != (largest is not None):
+            fail(f"{name}: the warning on a coarse-grained size mixture is {'there' if mixture else 'missing'}")
 
 
 def check(rows):
