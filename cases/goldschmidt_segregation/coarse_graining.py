@@ -191,12 +191,12 @@ class Plan:
                      "free_steps": str(round(FREE_STEPS * stretch))}
         if self.scaling == "none":  # parcel values: the beads' spring and restitution with the parcels' masses
             variables["damping"] = damping_matrix(self.masses)
+        l = self.diameters[0] / BEAD_DIAMETERS[0]  # D / d of the variants that keep the beads' losses
         if self.name in KEEP_DISSIPATION:  # the beads' values for e'; scaling linear keeps e' for the parcels
-            l = self.diameters[0] / BEAD_DIAMETERS[0]
             restitution = math.sqrt(1 - l * (1 - RESTITUTION ** 2))
             variables["damping"] = damping_matrix([sphere_mass(d) for d in BEAD_DIAMETERS], restitution)
         if self.name in SCALE_FRICTION:
-            variables["bead_friction"] = f"{self.diameters[0] / BEAD_DIAMETERS[0] * BEAD_FRICTION:.6g}"
+            variables["bead_friction"] = f"{l * BEAD_FRICTION:.6g}"
         return variables
 
 
