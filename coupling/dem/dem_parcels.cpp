@@ -56,6 +56,7 @@ ParcelBatch DemParcels::read() {
   v_.assign(atom->v[0], atom->v[0] + 3 * n);
   dp_.resize(n);
   np_.resize(n);
+  mass_.assign(atom->rmass, atom->rmass + n);
   type_.assign(atom->type, atom->type + n);
   id_.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -64,7 +65,7 @@ ParcelBatch DemParcels::read() {
     id_[i] = static_cast<long>(atom->tag[i]);
   }
   checkFinite();
-  return {static_cast<std::size_t>(n), x_.data(), v_.data(), dp_.data(), np_.data()};
+  return {static_cast<std::size_t>(n), x_.data(), v_.data(), dp_.data(), np_.data(), mass_.data(), type_.data()};
 }
 
 void DemParcels::checkFinite() const {
@@ -89,12 +90,14 @@ void DemParcels::checkFinite() const {
 void DemParcels::write(const GasAtParcels& gas) {
   double** d = drag_->peratom();
   using Fix = plugins::FixParcelImplicitDrag;
+  const bool class_force = !gas.class_force.empty();
   for (std::size_t i = 0; i < dp_.size(); ++i) {
     const double volume = np_[i] * kPi / 6.0 * dp_[i] * dp_[i] * dp_[i];
     d[i][Fix::KAPPA] = gas.kappa[i];
     for (int k = 0; k < 3; ++k) {
       d[i][Fix::UFX + k] = gas.gas_velocity[3 * i + k];
-      d[i][Fix::FPX + k] = -volume * gas.grad_p[3 * i + k];
+      // the explicit force of the coupling interval: the pressure force and the missing class collisions
+      d[i][Fix::FPX + k] = -volume * gas.grad_p[3 * i + k] + (class_force ? gas.class_force[3 * i + k] : 0.0);
     }
   }
 }

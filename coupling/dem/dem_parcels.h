@@ -1,6 +1,7 @@
 // The coupling layer's only window into LIGGGHTS' parcels: reads positions, velocities, dp and np of the
 // local parcels after each DEM advance (LIGGGHTS moves and reorders its arrays on every run), and writes
-// the implicit drag coefficient, gas velocity and pressure-gradient force into the integrator fix.
+// the implicit drag coefficient, gas velocity and the explicit forces (pressure gradient, missing class
+// collisions) into the integrator fix.
 #pragma once
 
 #include <string>
@@ -22,7 +23,8 @@ class DemParcels {
   // A non-finite position, velocity, dp or np throws std::runtime_error naming the parcel id, the value
   // and the DEM step (only the rank that holds the parcel knows: it stops all ranks).
   ParcelBatch read();
-  // Sets kappa, u_f and the pressure force -np V_p grad p of the parcels of the last read().
+  // Sets kappa, u_f and the explicit force -np V_p grad p (+ gas.class_force if set) of the parcels of the last
+  // read().
   void write(const GasAtParcels& gas);
   // Atom types and ids of the parcels of the last read() (for parcel output).
   const std::vector<int>& types() const { return type_; }
@@ -48,7 +50,7 @@ class DemParcels {
   plugins::FixParcel* parcel_ = nullptr;
   plugins::FixParcelImplicitDrag* drag_ = nullptr;
   plugins::FixParcelReinject* reinject_ = nullptr;
-  std::vector<double> x_, v_, dp_, np_;
+  std::vector<double> x_, v_, dp_, np_, mass_;
   std::vector<int> type_;
   std::vector<long> id_;
 };

@@ -86,8 +86,18 @@ FilteredDragSettings readFilteredDrag(const YamlSection& s, const std::string& d
   return settings;
 }
 
+ClassCollisionSettings readClassCollisions(const YamlSection& s) {
+  s.allowOnly({"restitution", "friction"});
+  ClassCollisionSettings c;
+  c.enabled = true;
+  // no defaults: they are the LIGGGHTS script's values for collisions between the types
+  c.restitution = s.number("restitution", std::nullopt, Range::closed(0.0, 1.0));
+  c.friction = s.number("friction", std::nullopt, Range::nonNegative());
+  return c;
+}
+
 CouplingSettings readCoupling(const YamlSection& s) {
-  s.allowOnly({"drag", "filtered_drag", "kernel", "gas_fraction_floor", "excess_solids", "guards"});
+  s.allowOnly({"drag", "filtered_drag", "kernel", "gas_fraction_floor", "excess_solids", "class_collisions", "guards"});
   CouplingSettings c;
   c.drag = s.word("drag", c.drag, dragLawNames());
   c.filtered_drag = readFilteredDrag(s, c.drag);
@@ -96,6 +106,7 @@ CouplingSettings readCoupling(const YamlSection& s) {
       s.number("gas_fraction_floor", c.gas_fraction_floor, Range{kMinGasFractionFloor, 1.0, false, true});
   c.excess_solids = s.word("excess_solids", c.excess_solids, {"discard", "spill"});
   if (s.has("guards")) c.guards = readGuards(s.map("guards"));
+  if (s.has("class_collisions")) c.class_collisions = readClassCollisions(s.map("class_collisions"));
   if (s.has("kernel")) {
     const YamlSection k = s.map("kernel");
     if (k.has("width"))

@@ -23,6 +23,7 @@
 #include "monitor_registry.h"
 #include "monitor_table.h"
 #include "output_folder.h"
+#include "class_collision_exchange.h"
 #include "parcel_mesh_coupler.h"
 #include "parcel_writer.h"
 #include "plane_averages.h"
@@ -58,6 +59,7 @@ struct CoupledRun::State {
   std::unique_ptr<RunWarnings> warnings;
   std::unique_ptr<BlowupGuard> guard;
   std::unique_ptr<cfd::DiffusionSmoother> smoother;  // coupling.kernel.smoothing_length > 0
+  std::unique_ptr<ClassCollisionExchange> class_collisions;  // coupling.class_collisions
   bool spill_excess_solids = false;                   // coupling.excess_solids: spill
 
   int dem_steps = 1;
@@ -179,6 +181,10 @@ void CoupledRun::initialize() {
   s.dem->start(checkpoint ? checkpoint->paths.dem : std::string(),
                writeGeometryStl(s.case_def.gas, s.output.string(), MPI_COMM_WORLD));
   s.dem_steps = cs.time.demStepsPerGasStep();
+  if (cs.coupling.class_collisions.enabled)
+    s.class_collisions = std::make_unique<ClassCollisionExchange>(
+        MPI_COMM_WORLD, s.dem->parcels().ntypes(),
+        ClassCollisionParameters{cs.coupling.class_collisions.restitution, cs.coupling.class_collisions.friction});
   s.loop.initial_parcels = s.dem->parcels().globalCount();
   KernelReach kernel_reach;
   if (cs.coupling.kernel.type == GaussianKernel::typeName)  // h of the cell_volume length scale
@@ -272,6 +278,7 @@ bool CoupledRun::advance() {
   s.counters.drag_invalid += static_cast<long>(drag.invalidInput);
   s.counters.drag_above_one += static_cast<long>(drag.alphaGAboveOne);
   s.counters.drag_filter_clamped += static_cast<long>(drag.filterCorrectionClamped);
+  if (s.class_collisions) s.class_collisions->computeForces(*s.coupler, s.gas_fraction, dt, s.at_parcels.class_force);
   s.gas->setGasFraction(s.gas_fraction);
   s.gas->setDragCoefficient(s.solids.beta);
   s.gas->setDragSource(vectorField(s.solids.beta_us));
@@ -454,6 +461,10 @@ void CoupledRun::finalize() {
                 "steps, %ld linear solves stopped at max_iterations\n",
                 s.loop.step > 0 ? static_cast<double>(total.pressure_iterations) / s.loop.step : 0.0,
                 total.preconditioner_builds, s.loop.step, total.unconverged_solves);
+    if (s.class_collisions)
+      std::printf("parcelflow: class collisions (coupling.class_collisions): %ld cell-steps of a pair of classes "
+                  "left uncorrected (their parcels exchange more than their particles)\n",
+                  s.class_collisions->uncorrected());
     std::printf("parcelflow: peak memory per rank: largest %.1f MB (rank %d), smallest %.1f MB\n",
                 memory.largest_mb, memory.largest_rank, memory.smallest_mb);
     if (ranks > 1)

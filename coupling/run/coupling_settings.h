@@ -54,12 +54,22 @@ struct FilteredDragSettings {
   double filter_cells = 1.0;      // filter width Delta in gas cells: Delta = filter_cells (V_cell)^(1/3)
 };
 
+// coupling.class_collisions (absent: off): the collisions between the atom types of a size mixture that
+// coarse-grained parcels do not make, added as a force (run/class_collision_exchange.h); e and C_f of the
+// collisions between the types, as the LIGGGHTS script has them.
+struct ClassCollisionSettings {
+  bool enabled = false;
+  double restitution = 0.0;
+  double friction = 0.0;
+};
+
 struct CouplingSettings {
   std::string drag = "WenYu";
   FilteredDragSettings filtered_drag;
   KernelSettings kernel;
   double gas_fraction_floor = 0.35;  // a_g is never below this; every hit is counted and reported
   std::string excess_solids = "spill";  // solids above 1 - floor: "spill" (to the neighbours) or "discard" (cut)
+  ClassCollisionSettings class_collisions;
   GuardSettings guards;
 };
 

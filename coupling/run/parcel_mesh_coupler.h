@@ -31,6 +31,8 @@ struct ParcelBatch {
   const double* v = nullptr;
   const double* dp = nullptr;  // real particle diameter
   const double* np = nullptr;  // real particles per parcel
+  const double* mass = nullptr;  // parcel mass (read by coupling.class_collisions only)
+  const int* type = nullptr;     // LIGGGHTS atom type, 1-based (likewise)
 };
 
 struct GasProperties {
@@ -52,6 +54,7 @@ struct GasAtParcels {
   std::vector<double> grad_p;
   std::vector<double> gas_fraction;
   std::vector<double> mean_diameter;  // local Sauter mean <d> (only for a law that uses it, else empty)
+  std::vector<double> class_force;    // force of the missing class collisions (coupling.class_collisions, else empty)
 };
 
 class ParcelMeshCoupler {
@@ -79,13 +82,18 @@ class ParcelMeshCoupler {
 
   // The fluid volume of owned cell c (the background cell's volume off the walls).
   double ownedCellVolume(int c) const { return owned_volume_[c]; }
+  int ownedCells() const { return n_owned_; }
+  // This step's parcels (those of beginStep).
+  const ParcelBatch& parcels() const { return parcels_; }
 
- private:
+  // The generic transfers over this step's stencils, for a model beyond the drag (class_collision_exchange.h).
   // `width` values per parcel -> their kernel-weighted sums on the owned cells.
   void depositToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned);
   // `width` values per owned cell -> kernel-weighted means at the parcels (orphans get orphan_value).
   void gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value,
                        std::vector<double>& at_parcels);
+
+ private:
   long backgroundCell(int i, int j, int k) const {
     return i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k);
   }

@@ -145,6 +145,20 @@ TEST(CaseReader, GuardsAndFloor) {
   expectMentions(errorOf("coupling: {gas_fraction_floor: 1.0e-300}\n"), {"coupling.gas_fraction_floor", "[0.01, 1)"});
 }
 
+TEST(CaseReader, ClassCollisionsTakeTheScriptsRestitutionAndFriction) {
+  EXPECT_FALSE(pc::readCouplingSettings(YAML::Load(kValid)).coupling.class_collisions.enabled);
+  const pc::CaseSettings s = pc::readCouplingSettings(
+      YAML::Load(std::string(kValid) + "coupling: {class_collisions: {restitution: 0.97, friction: 0.1}}\n"));
+  EXPECT_TRUE(s.coupling.class_collisions.enabled);
+  EXPECT_DOUBLE_EQ(s.coupling.class_collisions.restitution, 0.97);
+  EXPECT_DOUBLE_EQ(s.coupling.class_collisions.friction, 0.1);
+  expectMentions(errorOf("coupling: {class_collisions: {restitution: 0.97}}\n"), {"coupling.class_collisions.friction"});
+  expectMentions(errorOf("coupling: {class_collisions: {restitution: 1.5, friction: 0.1}}\n"),
+                 {"coupling.class_collisions.restitution", "1.5", "[0, 1]"});
+  expectMentions(errorOf("coupling: {class_collisions: {restitution: 0.9, friction: 0.1, e: 1}}\n"),
+                 {"coupling.class_collisions.e"});
+}
+
 TEST(CaseReader, ACoupledRunTakesCutCells) {
   // parcels find their cut cells (issue 31, part 3): the coupled case reads with either wall representation
   const std::string yaml = "liggghts: {script: bed.in}\ntime: {end: 1.0, gas_step: 2.0e-4, dem_step: 2.0e-5}\n";

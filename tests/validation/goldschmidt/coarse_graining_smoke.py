@@ -8,7 +8,9 @@ variant and writes the table, and that each bed is what it must be, from the par
   d5mm_*       round(fine mass / 5 mm parcel mass) parcels of 5 mm, np (5/1.5)^3 and (5/2.5)^3 = 8
   d2.5mm_linear  round(fine mass / 2.5 mm bead mass) parcels of 2.5 mm, np (2.5/1.5)^3 and 1
 each class with one np and dp, both classes present, and the solid mass of every coarse bed equal to the fine
-bed's within the mass of one of its parcels. The temporary folder is removed at the end.
+bed's within the mass of one of its parcels. np8_linear runs once more with coupling.class_collisions: it must
+finish, report its uncorrected cell-steps (none: both classes have l = 2) and move its parcels otherwise than
+the run without (the force reaches them). The temporary folder is removed at the end.
 
 usage: coarse_graining_smoke.py PARCELFLOW MPIEXEC...
 """
@@ -56,6 +58,11 @@ def main():
         rows = {r["variant"]: r for r in csv.DictReader(open(os.path.join(root, "coarse_graining.csv")))}
         check(rows)
         check_parcel_reports(root)
+        root_cc = os.path.join(work, "runs_class_collisions")
+        run([sys.executable, SCRIPT, parcelflow, root_cc, "np8_linear", "--case", case, "--end", "0.02", "--start",
+             "0.01", "--ranks", ranks, "--mpirun", shlex.join(mpirun),
+             "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}"])
+        check_class_collisions(os.path.join(root, "np8_linear", "run"), os.path.join(root_cc, "np8_linear", "run"))
     expect_nothing_left(work, here_before)
     print("PASS")
 
@@ -80,6 +87,22 @@ def check_parcel_reports(root):
             fail(f"{name}: the warning of too few parcels across the bed is {'there' if warned else 'missing'}")
         if mixture != (largest is not None):
             fail(f"{name}: the warning on a coarse-grained size mixture is {'there' if mixture else 'missing'}")
+
+
+def check_class_collisions(without, with_model):
+    text = open(os.path.join(with_model, "stdout.txt"), errors="replace").read()
+    report = "parcelflow: class collisions (coupling.class_collisions): 0 cell-steps of a pair of classes left " \
+             "uncorrected"
+    if report not in text:
+        fail("the run with coupling.class_collisions lacks its report of 0 uncorrected cell-steps")
+    heights = []
+    for folder in (without, with_model):
+        rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
+        heights.append((float(rows[-1]["mean_z_type1"]), float(rows[-1]["mean_z_type2"])))
+    print(f"[measured] np8_linear mean heights of the classes at the end: {heights[0]} without, {heights[1]} with "
+          f"coupling.class_collisions")
+    if heights[0] == heights[1]:
+        fail("coupling.class_collisions left every parcel where it was without it: no force reached them")
 
 
 def check(rows):
