@@ -1,5 +1,6 @@
 #include "class_collision_exchange.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -31,6 +32,7 @@ void ClassCollisionExchange::computeForces(ParcelMeshCoupler& coupler, const std
     q[4] = volume;
     q[5] = np * dp * dp;
     q[6] = volume * std::cbrt(np);  // l = D / dp = np^(1/3) in both parcel modes
+    for (int d = 0; d < 3; ++d) q[7] += m * parcels.v[3 * p + d] * parcels.v[3 * p + d];
   }
   coupler.depositToOwners(per_parcel_, width, on_cells_);
   const int cells = coupler.ownedCells();
@@ -46,7 +48,13 @@ void ClassCollisionExchange::computeForces(ParcelMeshCoupler& coupler, const std
       k.density = q[0] / q[4];
       k.diameter = 6.0 / kPi * q[4] / q[5];
       k.parcel_diameter = k.diameter * q[6] / q[4];
-      for (int d = 0; d < 3; ++d) k.velocity[d] = q[1 + d] / q[0];
+      double mean_square = 0.0;
+      for (int d = 0; d < 3; ++d) {
+        k.velocity[d] = q[1 + d] / q[0];
+        mean_square += k.velocity[d] * k.velocity[d];
+      }
+      // the spread of the parcels about their class's mean, where the kernel reaches (0 for one parcel)
+      k.temperature = std::max(0.0, (q[7] / q[0] - mean_square) / 3.0);
     }
     uncorrected += model_.accelerations(classes_.data(), classes_.size(), gas_fraction[c], dt,
                                         accel_on_cells_.data() + static_cast<std::size_t>(c) * 3 * types_);

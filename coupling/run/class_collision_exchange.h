@@ -2,8 +2,9 @@
 // coarse-grained parcels do not make, added to the parcels as a force (drag/class_collision_drag.hpp).
 //
 // Each coupling step: every parcel deposits, for its type, its mass, momentum, volume np V_p, the moment
-// np dp^2 and its volume times l = D / dp on the owned cells, with the step's kernel weights; per cell each
-// type becomes a class (solids fraction, density, Sauter diameter, mean l, mass-weighted velocity); the
+// np dp^2, its volume times l = D / dp and m |v|^2 on the owned cells, with the step's kernel weights; per
+// cell each type becomes a class (solids fraction, density, Sauter diameter, mean l, mass-weighted velocity
+// and granular temperature, the parcels' velocity variance about that mean within the kernel's reach); the
 // classes' accelerations are gathered back with the same weights and each parcel gets m_p times its
 // type's. What one type gains in a cell the others lose, so momentum is conserved to round-off; the
 // parcels' own fluctuations about their type's mean are not touched.
@@ -32,7 +33,7 @@ class ClassCollisionExchange {
   long uncorrected() const { return uncorrected_; }
 
  private:
-  static constexpr int kPerType = 7;  // mass, mass v (3), volume, np dp^2, volume l
+  static constexpr int kPerType = 8;  // mass, mass v (3), volume, np dp^2, volume l, mass |v|^2
   MPI_Comm comm_;
   int types_;
   ClassCollisionDrag model_;

@@ -59,7 +59,13 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                                   1e3 * sizes.smallest_dp, 1e3 * sizes.largest_dp, length_ratio, kMixtureLengthRatio) +
                     "coarse-grained size mixtures segregated by size more than their particles in the measured bed "
                     "(the Goldschmidt beads with a periodic depth, over 10-20 s: beads -0.001, l = 1.5 0.030, l = 2 "
-                    "0.774); where the classes' mixing matters, use parcels of at most l = " +
+                    "0.774, l = 2 with coupling.class_collisions 0.168); " +
+                    (reach.class_collisions
+                         ? std::string("coupling.class_collisions (on) restores the classes' collisions the parcels "
+                                       "miss, not all of the particles' mixing")
+                         : std::string("coupling.class_collisions, off in this run, adds the classes' collisions the "
+                                       "parcels miss")) +
+                    "; where the classes' mixing matters, use parcels of at most l = " +
                     cfd::shortNumber(kMixtureLengthRatio) +
                     " or check against a fine run (cases/goldschmidt_segregation/README.md, \"Coarse graining: "
                     "causes\")");

@@ -1,6 +1,7 @@
 // coupling.class_collisions on the coupler (run/class_collision_exchange.h): every parcel's type is a class of
 // its cell, the force conserves momentum across ranks to round-off, and in one cell it is the model's
-// acceleration of the class times the parcel's mass (issue 29).
+// acceleration of the class (with the parcels' velocity spread as its granular temperature) times the
+// parcel's mass (issue 29).
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -100,7 +101,7 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
   exchange.computeForces(coupler, std::vector<double>(box.owned.size(), gas_fraction), dt, force);
 
   // the cell's two classes, summed over all ranks' parcels here
-  double sums[2][5] = {};  // mass, mass vz, mass vx, mass vy, volume
+  double sums[2][6] = {};  // mass, mass vz, mass vx, mass vy, volume, mass |v|^2
   for (std::size_t p = 0; p < parcels.dp.size(); ++p) {
     double* s = sums[parcels.type[p] - 1];
     s[0] += parcels.mass[p];
@@ -108,6 +109,7 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
     s[2] += parcels.mass[p] * parcels.v[3 * p];
     s[3] += parcels.mass[p] * parcels.v[3 * p + 1];
     s[4] += parcels.mass[p] / kDensity;
+    for (int d = 0; d < 3; ++d) s[5] += parcels.mass[p] * parcels.v[3 * p + d] * parcels.v[3 * p + d];
   }
   pc::CollisionClass classes[2];
   for (int t = 0; t < 2; ++t) {
@@ -119,6 +121,10 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
     classes[t].velocity[0] = sums[t][2] / sums[t][0];
     classes[t].velocity[1] = sums[t][3] / sums[t][0];
     classes[t].velocity[2] = sums[t][1] / sums[t][0];
+    double mean_square = 0.0;
+    for (double u : classes[t].velocity) mean_square += u * u;
+    classes[t].temperature = (sums[t][5] / sums[t][0] - mean_square) / 3.0;
+    EXPECT_NEAR(classes[t].temperature, 0.05 * 0.05 / 12.0, 0.3 * 0.05 * 0.05 / 12.0);  // uniform noise of 0.05
   }
   double accel[6];
   pc::ClassCollisionDrag({0.9, 0.2}).accelerations(classes, 2, gas_fraction, dt, accel);

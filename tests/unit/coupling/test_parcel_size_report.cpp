@@ -96,6 +96,11 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   EXPECT_TRUE(mentions(lines[1], "particles of 1.5 to 2.5 mm (a size mixture) at up to l = D / dp = 2 (limit 1.5)"))
       << lines[1];
   EXPECT_TRUE(mentions(lines[1], "use parcels of at most l = 1.5")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "coupling.class_collisions, off in this run, adds")) << lines[1];
+  periodic.class_collisions = true;
+  EXPECT_TRUE(mentions(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic)[1],
+                       "coupling.class_collisions (on) restores"));
+  periodic.class_collisions = false;
   // np 3.375 (l = 1.5), which remixed as the beads do: within the limit
   EXPECT_EQ(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic).size(), 1u);
   // one particle size in parcels: no mixture warning

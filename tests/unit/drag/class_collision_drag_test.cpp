@@ -1,5 +1,6 @@
-// The missing class collisions (coupling/drag/class_collision_drag.hpp) against values computed here by hand
-// and against the analytic relaxation of two classes' relative velocity (issue 29).
+// The missing class collisions (coupling/drag/class_collision_drag.hpp) against values computed here by hand,
+// against an independent integration of the collisions' momentum transfer, and against the analytic relaxation
+// of two classes' relative velocity (issue 29).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +26,7 @@ pc::CollisionClass bead(double d, double l, double a, double vz) {
 
 }  // namespace
 
+// Without fluctuations the model is Syamlal's solids-solids drag.
 TEST(ClassCollisionDrag, CoefficientIsSyamlalsWithLebowitzsRadialDistribution) {
   const pc::ClassCollisionDrag model({0.97, 0.1});
   const pc::CollisionClass small = bead(1.5e-3, 1.0, 0.3, 0.0), large = bead(2.5e-3, 1.0, 0.25, 0.0);
@@ -36,8 +38,25 @@ TEST(ClassCollisionDrag, CoefficientIsSyamlalsWithLebowitzsRadialDistribution) {
   // 3 (1.97)(pi/2 + 0.1 pi^2/8) (4e-3)^2 / (2 pi 2526 (1.5e-3^3 + 2.5e-3^3)) * (0.3 * 2526)(0.25 * 2526) * g0
   const double expected = 3.0 * 1.97 * (kPi / 2.0 + 0.1 * kPi * kPi / 8.0) * 16e-6 /
                           (2.0 * kPi * 2526.0 * (3.375e-9 + 15.625e-9)) * (0.3 * 2526.0) * (0.25 * 2526.0) * g0;
-  EXPECT_NEAR(model.coefficientPerSpeed(small, large, 1.5e-3, 2.5e-3, ag, sum), expected, 1e-9 * expected);
+  const double slip = 0.1;
+  EXPECT_NEAR(model.pairCoefficient(small, large, 1.5e-3, 2.5e-3, ag, sum) *
+                  pc::ClassCollisionDrag::collisionSpeed(slip, 0.0) / slip,
+              expected, 1e-9 * expected);
   EXPECT_NEAR(expected, 1.6242e6, 0.0001e6);  // kg/m^4: 0.1 m/s of slip exchanges 1.6e5 N/m^3
+}
+
+// J(|u|, s) against E[(pi/2) |g| g_z] / |u| for g ~ N(|u| z, s^2 I), integrated directly over g with scipy's
+// dblquad (rho and z, 12 s each way, relative error 1e-11): an integration over the relative velocities, where
+// the model integrates over the collision normals.
+TEST(ClassCollisionDrag, CollisionSpeedIsTheMomentumTransferOfGaussianRelativeVelocities) {
+  const double reference[][3] = {{0.01, 0.1, 0.33455120109044134}, {0.05, 0.05, 0.18325395971238007},
+                                 {0.1, 0.02, 0.16939467591692903}, {0.2, 0.01, 0.3157280981903654},
+                                 {0.001, 0.1, 0.3342204455159641}};
+  for (const auto& r : reference)
+    EXPECT_NEAR(pc::ClassCollisionDrag::collisionSpeed(r[0], r[1]), r[2], 1e-4 * r[2])
+        << "slip " << r[0] << ", spread " << r[1];
+  EXPECT_DOUBLE_EQ(pc::ClassCollisionDrag::collisionSpeed(0.3, 0.0), kPi / 2.0 * 0.3);
+  EXPECT_DOUBLE_EQ(pc::ClassCollisionDrag::collisionSpeed(0.0, 0.1), 8.0 / 3.0 * std::sqrt(kPi / 2.0) * 0.1);
 }
 
 TEST(ClassCollisionDrag, ParcelsOfOneLMissTheShareOneMinusOneOverL) {
@@ -47,8 +66,8 @@ TEST(ClassCollisionDrag, ParcelsOfOneLMissTheShareOneMinusOneOverL) {
     const pc::CollisionClass classes[2] = {bead(1.5e-3, l, 0.3, 0.2), bead(2.5e-3, l, 0.25, -0.1)};
     double accel[6];
     EXPECT_EQ(model.accelerations(classes, 2, 0.45, dt, accel), 0);
-    const double full = model.coefficientPerSpeed(classes[0], classes[1], 1.5e-3, 2.5e-3, 0.45,
-                                                  0.3 / 1.5e-3 + 0.25 / 2.5e-3) * 0.3;  // per |dv| dv
+    const double full = model.pairCoefficient(classes[0], classes[1], 1.5e-3, 2.5e-3, 0.45,
+                                              0.3 / 1.5e-3 + 0.25 / 2.5e-3) * kPi / 2.0 * 0.3;  // per dv
     const double expected_small = (1.0 - 1.0 / l) * full * (-0.3) / (0.3 * 2526.0);
     EXPECT_NEAR(accel[2], expected_small, 1e-6 * std::abs(full * 0.3 / 2526.0)) << "l = " << l;
     EXPECT_EQ(accel[0], 0.0);
@@ -76,12 +95,12 @@ TEST(ClassCollisionDrag, ConservesMomentumOfThreeClasses) {
   }
 }
 
-// d(dv)/dt = -K |dv| dv with K = c (1/(rho a_l) + 1/(rho a_m)) gives dv(t) = dv0 / (1 + K dv0 t).
+// Without fluctuations: d(dv)/dt = -K |dv| dv with K = c (1/(rho a_l) + 1/(rho a_m)) gives dv(t) = dv0 / (1 + K dv0 t).
 TEST(ClassCollisionDrag, RelativeVelocityRelaxesAsTheAnalyticSolution) {
   const pc::ClassCollisionDrag model({0.97, 0.1});
   pc::CollisionClass classes[2] = {bead(1.5e-3, 2.0, 0.3, 0.2), bead(2.5e-3, 2.0, 0.25, -0.1)};
-  const double c = 0.5 * model.coefficientPerSpeed(classes[0], classes[1], 1.5e-3, 2.5e-3, 0.45,
-                                                   0.3 / 1.5e-3 + 0.25 / 2.5e-3);
+  const double c = 0.5 * kPi / 2.0 *
+                   model.pairCoefficient(classes[0], classes[1], 1.5e-3, 2.5e-3, 0.45, 0.3 / 1.5e-3 + 0.25 / 2.5e-3);
   const double K = c * (1.0 / (0.3 * 2526.0) + 1.0 / (0.25 * 2526.0));
   const double dv0 = 0.3, dt = 1e-6, end = 0.005;  // K dv0 end = 3.5: the slip falls to 0.22 of dv0
   double accel[6];
@@ -97,14 +116,17 @@ TEST(ClassCollisionDrag, RelativeVelocityRelaxesAsTheAnalyticSolution) {
   EXPECT_NEAR(0.3 * classes[0].velocity[2] + 0.25 * classes[1].velocity[2], momentum0, 1e-12);
 }
 
-// One step far longer than the relaxation time: the pair relaxes by exp(-r dt), never past each other.
+// One step far longer than the relaxation time, with fluctuations: the pair relaxes by exp(-r dt), never past
+// each other.
 TEST(ClassCollisionDrag, ALongStepRelaxesThePairExactlyAtItsStartRate) {
   const pc::ClassCollisionDrag model({0.97, 0.1});
   pc::CollisionClass classes[2] = {bead(1.5e-3, 3.0, 0.3, 0.5), bead(2.5e-3, 3.0, 0.3, -0.5)};
-  const double c = (1.0 - 1.0 / 3.0) * model.coefficientPerSpeed(classes[0], classes[1], 1.5e-3, 2.5e-3, 0.4,
-                                                                 0.3 / 1.5e-3 + 0.3 / 2.5e-3);
+  classes[0].temperature = 0.04;
+  classes[1].temperature = 0.02;
+  const double c = (1.0 - 1.0 / 3.0) * model.pairCoefficient(classes[0], classes[1], 1.5e-3, 2.5e-3, 0.4,
+                                                             0.3 / 1.5e-3 + 0.3 / 2.5e-3);
   const double dt = 2e-3;
-  const double rate_dt = c * 1.0 * (2.0 / (0.3 * 2526.0)) * dt;
+  const double rate_dt = c * pc::ClassCollisionDrag::collisionSpeed(1.0, std::sqrt(0.06)) * (2.0 / (0.3 * 2526.0)) * dt;
   EXPECT_GT(rate_dt, 5.0);
   double accel[6];
   model.accelerations(classes, 2, 0.4, dt, accel);
