@@ -29,7 +29,8 @@ class ClassCollisionExchange {
   void computeForces(ParcelMeshCoupler& coupler, const std::vector<double>& gas_fraction, double dt,
                      std::vector<double>& force);
 
-  // Cell-steps of a pair of classes whose parcels exchange more than their particles (not corrected).
+  // Cell-steps of a pair of classes whose parcels exchange more than their particles (not corrected), since
+  // this run (or its continuation from a checkpoint) started.
   long uncorrected() const { return uncorrected_; }
 
  private:
