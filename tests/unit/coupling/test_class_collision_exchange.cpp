@@ -57,22 +57,32 @@ struct Mixture {
   }
 };
 
-pc::ParcelMeshCoupler makeCoupler(const Box& box, const pc::CellOwnerMap& owners, const char* kernel) {
-  return pc::ParcelMeshCoupler(box.grid, owners, pc::makeTransferKernel(kernel), pc::makeDragLaw("WenYu"),
-                               pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
+struct Forces {
+  std::vector<double> force;  // per parcel, interleaved xyz
+  long uncorrected = 0;
+};
+
+// One coupling step's class-collision forces on the parcels, with a uniform gas fraction.
+Forces classCollisionForces(const Box& box, const Mixture& parcels, const char* kernel,
+                            pc::ClassCollisionParameters parameters, double gas_fraction, double dt) {
+  pc::CellOwnerMap owners(MPI_COMM_WORLD, 8 * 4 * 8, box.owned);
+  pc::ParcelMeshCoupler coupler(box.grid, owners, pc::makeTransferKernel(kernel), pc::makeDragLaw("WenYu"),
+                                pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
+  coupler.beginStep(parcels.batch());
+  pc::ClassCollisionExchange exchange(MPI_COMM_WORLD, 2, parameters);
+  Forces out;
+  exchange.computeForces(coupler, std::vector<double>(box.owned.size(), gas_fraction), dt, out.force);
+  out.uncorrected = exchange.uncorrected();
+  return out;
 }
 
 }  // namespace
 
 TEST(ClassCollisionExchange, ConservesMomentumAcrossRanksAndSlowsTheSlip) {
   Box box;
-  pc::CellOwnerMap owners(MPI_COMM_WORLD, 8 * 4 * 8, box.owned);
-  pc::ParcelMeshCoupler coupler = makeCoupler(box, owners, "gaussian");
   const Mixture parcels(3000, 8.0, {0.0, 0.0, 0.0}, {0.08, 0.04, 0.08}, 11 + box.rank);
-  coupler.beginStep(parcels.batch());
-  pc::ClassCollisionExchange exchange(MPI_COMM_WORLD, 2, {0.97, 0.1});
-  std::vector<double> force;
-  exchange.computeForces(coupler, std::vector<double>(box.owned.size(), 0.45), 1e-4, force);
+  const Forces result = classCollisionForces(box, parcels, "gaussian", {0.97, 0.1}, 0.45, 1e-4);
+  const std::vector<double>& force = result.force;
   ASSERT_EQ(force.size(), 3 * parcels.dp.size());
   double total[3] = {0, 0, 0}, magnitude = 0.0, on_type[2] = {0, 0};
   for (std::size_t p = 0; p < parcels.dp.size(); ++p) {
@@ -85,20 +95,15 @@ TEST(ClassCollisionExchange, ConservesMomentumAcrossRanksAndSlowsTheSlip) {
   for (double f : total) EXPECT_LT(std::abs(pc::test::sumOverRanks(f)), 1e-12 * magnitude);
   EXPECT_LT(pc::test::sumOverRanks(on_type[0]), -0.4 * magnitude);  // the rising small beads are held back
   EXPECT_GT(pc::test::sumOverRanks(on_type[1]), 0.4 * magnitude);
-  EXPECT_EQ(exchange.uncorrected(), 0);
+  EXPECT_EQ(result.uncorrected, 0);
 }
 
 TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAcceleration) {
   Box box;
-  pc::CellOwnerMap owners(MPI_COMM_WORLD, 8 * 4 * 8, box.owned);
-  pc::ParcelMeshCoupler coupler = makeCoupler(box, owners, "centroid");
   // every parcel of every rank in cell (3, 1, 4)
   const Mixture parcels(40, 8.0, {0.03, 0.01, 0.04}, {0.04, 0.02, 0.05}, 5 + box.rank);
-  coupler.beginStep(parcels.batch());
-  pc::ClassCollisionExchange exchange(MPI_COMM_WORLD, 2, {0.9, 0.2});
-  std::vector<double> force;
   const double gas_fraction = 0.5, dt = 2e-4;
-  exchange.computeForces(coupler, std::vector<double>(box.owned.size(), gas_fraction), dt, force);
+  const std::vector<double> force = classCollisionForces(box, parcels, "centroid", {0.9, 0.2}, gas_fraction, dt).force;
 
   // the cell's two classes, summed over all ranks' parcels here
   double sums[2][6] = {};  // mass, mass vz, mass vx, mass vy, volume, mass |v|^2
@@ -138,12 +143,7 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
 
 TEST(ClassCollisionExchange, ParticlesAsParcelsOfOneGetNoForce) {
   Box box;
-  pc::CellOwnerMap owners(MPI_COMM_WORLD, 8 * 4 * 8, box.owned);
-  pc::ParcelMeshCoupler coupler = makeCoupler(box, owners, "gaussian");
   const Mixture parcels(500, 1.0, {0.0, 0.0, 0.0}, {0.08, 0.04, 0.08}, 3 + box.rank);
-  coupler.beginStep(parcels.batch());
-  pc::ClassCollisionExchange exchange(MPI_COMM_WORLD, 2, {0.97, 0.1});
-  std::vector<double> force;
-  exchange.computeForces(coupler, std::vector<double>(box.owned.size(), 0.45), 1e-4, force);
-  for (double f : force) EXPECT_NEAR(f, 0.0, 1e-18);
+  for (double f : classCollisionForces(box, parcels, "gaussian", {0.97, 0.1}, 0.45, 1e-4).force)
+    EXPECT_NEAR(f, 0.0, 1e-18);
 }
