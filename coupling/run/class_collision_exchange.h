@@ -1,13 +1,15 @@
 // coupling.class_collisions: the collisions between the classes (atom types) of a size mixture that
 // coarse-grained parcels do not make, added to the parcels as a force (drag/class_collision_drag.hpp).
 //
-// Each coupling step: every parcel deposits, for its type, its mass, momentum, volume np V_p, the moment
-// np dp^2, its volume times l = D / dp and m |v|^2 on the owned cells, with the step's kernel weights; per
-// cell each type becomes a class (solids fraction, density, Sauter diameter, mean l, mass-weighted velocity
-// and granular temperature, the parcels' velocity variance about that mean within the kernel's reach); the
-// classes' accelerations are gathered back with the same weights and each parcel gets m_p times its
-// type's. What one type gains in a cell the others lose, so momentum is conserved to round-off; the
-// parcels' own fluctuations about their type's mean are not touched.
+// Each coupling step: the atom types that some rank's parcels have are the classes (a wall type is none).
+// Every parcel deposits, for its class, its mass, momentum, volume np V_p, the moment np dp^2, its volume
+// times l = D / dp and m |v|^2 on the owned cells, with the step's kernel weights, and m^2 with the weights
+// squared; per cell each class gets its solids fraction, density, Sauter diameter, mean l, mass-weighted
+// velocity and granular temperature (the parcels' velocity variance about that mean within the kernel's
+// reach, unbiased for the few parcels a kernel holds); the classes' accelerations are gathered back with the
+// same weights and each parcel gets m_p times its class's. What one class gains in a cell the others lose,
+// so momentum is conserved to round-off; the parcels' own fluctuations about their class's mean are not
+// touched.
 #pragma once
 
 #include <mpi.h>
@@ -34,12 +36,19 @@ class ClassCollisionExchange {
   long uncorrected() const { return uncorrected_; }
 
  private:
-  static constexpr int kPerType = 8;  // mass, mass v (3), volume, np dp^2, volume l, mass |v|^2
+  // This step's classes: the atom types some parcel on some rank has (not the walls' type); returns how many.
+  // Collective.
+  int assignClasses(const ParcelBatch& parcels);
+
+  static constexpr int kPerClass = 8;  // mass, mass v (3), volume, np dp^2, volume l, mass |v|^2
   MPI_Comm comm_;
   int types_;
   ClassCollisionDrag model_;
   long uncorrected_ = 0;
-  std::vector<double> per_parcel_, on_cells_, accel_on_cells_, at_parcels_;  // kept from step to step
+  // kept from step to step
+  std::vector<double> per_parcel_, on_cells_, accel_on_cells_, at_parcels_;
+  std::vector<double> squared_mass_per_class_, squared_mass_on_cells_;  // m^2, and sum w^2 m^2 per cell and class
+  std::vector<int> held_, class_of_type_;  // per atom type: whether some rank's parcels have it; its class or -1
   std::vector<CollisionClass> classes_;
 };
 

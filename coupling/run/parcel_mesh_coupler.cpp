@@ -51,6 +51,7 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   }
   const TransferStats stats = buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_,
                                                kernel_reads_diameters_ ? diameters_.data() : nullptr);
+  squared_current_ = false;
   // Every fluid cell of the box is exchanged (cells no window reaches carry zeros): the box is this
   // rank's parcels' neighbourhood, so it is about the cells the stencils touch.
   touched_.clear();
@@ -71,15 +72,34 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
 
 void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, int width,
                                         std::vector<double>& owned) {
+  depositWith(stencils_, false, per_parcel, width, owned);
+}
+
+void ParcelMeshCoupler::depositSquaredWeightsToOwners(const std::vector<double>& per_parcel, int width,
+                                                      std::vector<double>& owned) {
+  if (!squared_current_) {
+    // separable weights: squaring each axis' factors (the z factors carry the renormalisation) squares w
+    squared_stencils_ = stencils_;
+    for (Window& w : squared_stencils_.windows)
+      for (int axis = 0; axis < 3; ++axis)
+        for (int a = 0; a < w.n[axis]; ++a) w.f[axis][a] *= w.f[axis][a];
+    squared_current_ = true;
+  }
+  depositWith(squared_stencils_, true, per_parcel, width, owned);
+}
+
+void ParcelMeshCoupler::depositWith(const BoxStencils& stencils, bool squared,
+                                    const std::vector<double>& per_parcel, int width, std::vector<double>& owned) {
   std::vector<double>& on_box = scratch_.on_box;
-  on_box.assign(static_cast<std::size_t>(stencils_.boxSize()) * width, 0.0);
-  deposit(stencils_, width, per_parcel.data(), on_box.data());
+  on_box.assign(static_cast<std::size_t>(stencils.boxSize()) * width, 0.0);
+  deposit(stencils, width, per_parcel.data(), on_box.data());
   std::vector<double>& on_touched = scratch_.on_touched;
   on_touched.resize(touched_.size() * width);
-  // a cell cut by a wall takes its fluid share of what the window put on the whole cell
-  for (std::size_t t = 0; t < touched_.size(); ++t)
-    for (int m = 0; m < width; ++m)
-      on_touched[width * t + m] = touched_fraction_[t] * on_box[width * box_of_touched_[t] + m];
+  // a cell cut by a wall takes its fluid share of what the window put on the whole cell (its weight w f)
+  for (std::size_t t = 0; t < touched_.size(); ++t) {
+    const double share = squared ? touched_fraction_[t] * touched_fraction_[t] : touched_fraction_[t];
+    for (int m = 0; m < width; ++m) on_touched[width * t + m] = share * on_box[width * box_of_touched_[t] + m];
+  }
   owned.assign(static_cast<std::size_t>(n_owned_) * width, 0.0);
   exchange_.sumToOwners(on_touched, width, owned);
 }

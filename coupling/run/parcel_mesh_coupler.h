@@ -89,11 +89,20 @@ class ParcelMeshCoupler {
   // The generic transfers over this step's stencils, for a model beyond the drag (class_collision_exchange.h).
   // `width` values per parcel -> their kernel-weighted sums on the owned cells.
   void depositToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned);
+  // The same with every weight squared (sum w^2 q): with depositToOwners' sum w q of the same q it gives the
+  // effective number of parcels (sum w q)^2 / sum (w q)^2 that a kernel-weighted mean stands on. Squared per
+  // background cell: a gas cell merged from several (cut cells) gets the sum of its members' squares, less
+  // than the square of their sum, so its number of parcels comes out too large there.
+  void depositSquaredWeightsToOwners(const std::vector<double>& per_parcel, int width, std::vector<double>& owned);
   // `width` values per owned cell -> kernel-weighted means at the parcels (orphans get orphan_value).
   void gatherFromOwned(const std::vector<double>& owned, int width, double orphan_value,
                        std::vector<double>& at_parcels);
 
  private:
+  // Deposits with `stencils` (this step's, or their squares: `squared`) and sums to the owners; a cut cell
+  // takes its fluid share (squared) of what the windows put on the whole cell.
+  void depositWith(const BoxStencils& stencils, bool squared, const std::vector<double>& per_parcel, int width,
+                   std::vector<double>& owned);
   long backgroundCell(int i, int j, int k) const {
     return i + static_cast<long>(grid_.cells[0]) * (j + static_cast<long>(grid_.cells[1]) * k);
   }
@@ -115,6 +124,8 @@ class ParcelMeshCoupler {
   ParcelBatch parcels_;
   std::vector<double> diameters_;       // this step's collision diameters, if the kernel reads them
   BoxStencils stencils_;                // this step's stencils
+  BoxStencils squared_stencils_;        // their weights squared, built when first asked for in a step
+  bool squared_current_ = false;
   std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
   std::vector<long> box_of_touched_;    // their box index
   std::vector<double> touched_fraction_;  // their fluid share (below 1 where a wall cuts them)

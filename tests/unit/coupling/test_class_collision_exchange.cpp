@@ -1,7 +1,7 @@
 // coupling.class_collisions on the coupler (run/class_collision_exchange.h): every parcel's type is a class of
 // its cell, the force conserves momentum across ranks to round-off, and in one cell it is the model's
-// acceleration of the class (with the parcels' velocity spread as its granular temperature) times the
-// parcel's mass (issue 29).
+// acceleration of the class (with the parcels' velocity spread, unbiased, as its granular temperature) times
+// the parcel's mass (issue 29).
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -64,12 +64,12 @@ struct Forces {
 
 // One coupling step's class-collision forces on the parcels, with a uniform gas fraction.
 Forces classCollisionForces(const Box& box, const Mixture& parcels, const char* kernel,
-                            pc::ClassCollisionParameters parameters, double gas_fraction, double dt) {
+                            pc::ClassCollisionParameters parameters, double gas_fraction, double dt, int types = 2) {
   pc::CellOwnerMap owners(MPI_COMM_WORLD, 8 * 4 * 8, box.owned);
   pc::ParcelMeshCoupler coupler(box.grid, owners, pc::makeTransferKernel(kernel), pc::makeDragLaw("WenYu"),
                                 pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   coupler.beginStep(parcels.batch());
-  pc::ClassCollisionExchange exchange(MPI_COMM_WORLD, 2, parameters);
+  pc::ClassCollisionExchange exchange(MPI_COMM_WORLD, types, parameters);
   Forces out;
   exchange.computeForces(coupler, std::vector<double>(box.owned.size(), gas_fraction), dt, out.force);
   out.uncorrected = exchange.uncorrected();
@@ -106,7 +106,7 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
   const std::vector<double> force = classCollisionForces(box, parcels, "centroid", {0.9, 0.2}, gas_fraction, dt).force;
 
   // the cell's two classes, summed over all ranks' parcels here
-  double sums[2][6] = {};  // mass, mass vz, mass vx, mass vy, volume, mass |v|^2
+  double sums[2][7] = {};  // mass, mass vz, mass vx, mass vy, volume, mass |v|^2, mass^2
   for (std::size_t p = 0; p < parcels.dp.size(); ++p) {
     double* s = sums[parcels.type[p] - 1];
     s[0] += parcels.mass[p];
@@ -115,6 +115,7 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
     s[3] += parcels.mass[p] * parcels.v[3 * p + 1];
     s[4] += parcels.mass[p] / kDensity;
     for (int d = 0; d < 3; ++d) s[5] += parcels.mass[p] * parcels.v[3 * p + d] * parcels.v[3 * p + d];
+    s[6] += parcels.mass[p] * parcels.mass[p];
   }
   pc::CollisionClass classes[2];
   for (int t = 0; t < 2; ++t) {
@@ -128,7 +129,9 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
     classes[t].velocity[2] = sums[t][1] / sums[t][0];
     double mean_square = 0.0;
     for (double u : classes[t].velocity) mean_square += u * u;
-    classes[t].temperature = (sums[t][5] / sums[t][0] - mean_square) / 3.0;
+    // the mass-weighted sample variance about the class's own mean (unbiased: n / (n - 1) for n parcels)
+    classes[t].temperature = (sums[t][5] / sums[t][0] - mean_square) / 3.0 * sums[t][0] * sums[t][0] /
+                             (sums[t][0] * sums[t][0] - sums[t][6]);
     EXPECT_NEAR(classes[t].temperature, 0.05 * 0.05 / 12.0, 0.3 * 0.05 * 0.05 / 12.0);  // uniform noise of 0.05
   }
   double accel[6];
@@ -139,6 +142,16 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
       const double expected = parcels.mass[p] * accel[3 * (parcels.type[p] - 1) + d];
       EXPECT_NEAR(force[3 * p + d], expected, 1e-10 * std::abs(parcels.mass[p] * accel[2]));
     }
+}
+
+// An atom type no parcel has (the walls' type of a script) is no class: the same forces as without it.
+TEST(ClassCollisionExchange, ATypeWithoutParcelsChangesNothing) {
+  Box box;
+  const Mixture parcels(600, 8.0, {0.0, 0.0, 0.0}, {0.08, 0.04, 0.08}, 17 + box.rank);
+  const Forces two = classCollisionForces(box, parcels, "gaussian", {0.97, 0.1}, 0.45, 1e-4);
+  const Forces five = classCollisionForces(box, parcels, "gaussian", {0.97, 0.1}, 0.45, 1e-4, 5);
+  ASSERT_EQ(two.force.size(), five.force.size());
+  for (std::size_t i = 0; i < two.force.size(); ++i) EXPECT_EQ(two.force[i], five.force[i]);
 }
 
 TEST(ClassCollisionExchange, ParticlesAsParcelsOfOneGetNoForce) {

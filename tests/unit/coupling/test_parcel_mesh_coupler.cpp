@@ -84,6 +84,38 @@ TEST_P(Conservation, VolumeDragAndMomentumReachTheOwnersExactly) {
 
 INSTANTIATE_TEST_SUITE_P(Kernels, Conservation, ::testing::Values("gaussian", "centroid"));
 
+// The squared-weight deposit gives sum_p w_pc^2 q_p on every owned cell, with w_pc read off a deposit of each
+// parcel alone (so at walls, in the corner and across ranks the weights are the coupler's own).
+TEST_P(Conservation, SquaredWeightsDepositTheSquaresOfTheParcelsWeights) {
+  LShapedDomain s;
+  pc::CellOwnerMap owners(MPI_COMM_WORLD, s.size(), s.owned);
+  pc::ParcelMeshCoupler coupler(s.grid, owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
+                                pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
+  const Parcels parcels(s, 30);
+  coupler.beginStep(parcels.batch());
+  const int n = static_cast<int>(parcels.dp.size());
+  std::vector<double> expected(s.owned.size(), 0.0), alone(n, 0.0), weights;
+  for (int r = 0; r < s.nranks; ++r) {
+    int count = n;
+    MPI_Bcast(&count, 1, MPI_INT, r, MPI_COMM_WORLD);
+    for (int p = 0; p < count; ++p) {  // one parcel of one rank at a time; the deposit is collective
+      std::fill(alone.begin(), alone.end(), 0.0);
+      if (r == s.rank) alone[p] = std::sqrt(parcels.np[p]);
+      coupler.depositToOwners(alone, 1, weights);  // w_pc sqrt(q_p)
+      for (std::size_t c = 0; c < weights.size(); ++c) expected[c] += weights[c] * weights[c];
+    }
+  }
+  std::vector<double> squared;
+  coupler.depositSquaredWeightsToOwners(parcels.np, 1, squared);
+  double largest = 0.0, error = 0.0;
+  for (std::size_t c = 0; c < squared.size(); ++c) {
+    largest = std::max(largest, expected[c]);
+    error = std::max(error, std::abs(squared[c] - expected[c]));
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(error, 1e-13 * largest);
+}
+
 // BVK's polydisperse correction needs the local Sauter mean <d> = sum np dp^3 / sum np dp^2. Every
 // position holds one parcel of each size, so both moments are the same field times a constant and <d>
 // is 81e-12 / 45e-8 = 1.8e-4 m at every parcel, whatever the kernel, walls or ranks.
