@@ -44,7 +44,8 @@ Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start
   --mpirun CMD the MPI launcher (default "mpirun"; "-np N" is appended; with several 1-rank --jobs use
                "mpirun --bind-to none": Open MPI binds every 1-rank run to the same first core)
   --set KEY=VALUE  sets a key of the case.yaml copies (dotted path, VALUE in YAML), for every variant, e.g.
-               --set coupling.kernel.boundary=reflect --set coupling.kernel.parcel_scale=2
+               --set coupling.kernel.boundary=reflect --set coupling.kernel.parcel_scale=2; parcel snapshots are
+               written after the first gas step and at the end unless output.parcels_interval is set
   --steps-per-contact N  the DEM step rule's N (default 11; 22 halves every variant's DEM step, the control
                of whether the scaled contacts are resolved finely enough)
   Each variant runs in OUTPUT_ROOT/VARIANT/ (case copy in case/, run in run/). A variant whose run finished
@@ -251,7 +252,8 @@ def set_up(plan, args, config):
     shutil.copytree(args.case, case, ignore=shutil.ignore_patterns("output"))
     config["liggghts"]["variables"].update(plan.variables)
     config["time"]["dem_step"] = plan.dem_step
-    config["output"]["parcels_interval"] = args.end  # one parcel snapshot after the first gas step, one at the end
+    if not any(setting.startswith("output.parcels_interval=") for setting in args.set):
+        config["output"]["parcels_interval"] = args.end  # one parcel snapshot after the first gas step, one at the end
     with open(os.path.join(case, "case.yaml"), "w") as f:
         yaml.safe_dump(config, f, sort_keys=False)
     return case, {"case": config, "end": args.end, "ranks": args.ranks}

@@ -10,13 +10,16 @@ variant and writes the table, and that each bed is what it must be, from the par
 each class with one np and dp, both classes present, and the solid mass of every coarse bed equal to the fine
 bed's within the mass of one of its parcels. np8_linear runs once more with coupling.class_collisions: it must
 finish, report its uncorrected cell-steps (none: both classes have l = 2) and move its parcels otherwise than
-the run without (the force reaches them). The temporary folder is removed at the end.
+the run without (the force reaches them). class_temperature.py reads the fine and np 8 runs' last snapshots:
+finite temperatures, the unbiased at least the taken one, and about 8 times fewer parcels per kernel for np 8.
+The temporary folder is removed at the end.
 
 usage: coarse_graining_smoke.py PARCELFLOW MPIEXEC...
 """
 import csv
 import math
 import os
+import re
 import shlex
 import sys
 import tempfile
@@ -63,6 +66,7 @@ def main():
              "0.01", "--ranks", ranks, "--mpirun", shlex.join(mpirun),
              "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}"])
         check_class_collisions(os.path.join(root, "np8_linear", "run"), os.path.join(root_cc, "np8_linear", "run"))
+        check_class_temperature(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
     expect_nothing_left(work, here_before)
     print("PASS")
 
@@ -103,6 +107,26 @@ def check_class_collisions(without, with_model):
           f"coupling.class_collisions")
     if heights[0] == heights[1]:
         fail("coupling.class_collisions left every parcel where it was without it: no force reached them")
+
+
+def check_class_temperature(fine, coarse):
+    script = os.path.join(CASES, "goldschmidt_segregation", "class_temperature.py")
+    out = run([sys.executable, script, fine, coarse])
+    print(out)
+    rows = [line for line in out.splitlines() if line.startswith((fine, coarse))]
+    if len(rows) != 2:
+        fail(f"class_temperature.py printed {len(rows)} rows for the two runs' last snapshots, expected 2")
+    parcels = []
+    for row in rows:
+        classes = [[float(x) for x in c] for c in re.findall(r"type \d: (\S+) / (\S+), n ([^;]+)", row)]
+        if len(classes) != 2 or not all(math.isfinite(x) and x >= 0 for c in classes for x in c) or \
+                any(unbiased < taken for taken, unbiased, _ in classes):
+            fail(f"class_temperature.py: {row}")
+        parcels.append([n for _, _, n in classes])
+    ratios = [f / c for f, c in zip(*parcels)]
+    print(f"[measured] parcels per kernel, fine / np 8: {ratios[0]:.2f} small, {ratios[1]:.2f} large")
+    if not all(5 < r < 12 for r in ratios):
+        fail(f"class_temperature.py: fine / np 8 parcels per kernel {ratios}, expected about 8")
 
 
 def check(rows):
