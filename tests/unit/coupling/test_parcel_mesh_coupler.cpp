@@ -60,13 +60,16 @@ struct Parcels {
 
 }  // namespace
 
-class Conservation : public ::testing::TestWithParam<const char*> {};
+// The L-shaped domain with its coupler, for the kernel the test is run with.
+class Conservation : public ::testing::TestWithParam<const char*> {
+ protected:
+  LShapedDomain s;
+  pc::CellOwnerMap owners{MPI_COMM_WORLD, s.size(), s.owned};
+  pc::ParcelMeshCoupler coupler{s.grid, owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
+                                pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5}};
+};
 
 TEST_P(Conservation, VolumeDragAndMomentumReachTheOwnersExactly) {
-  LShapedDomain s;
-  pc::CellOwnerMap owners(MPI_COMM_WORLD, s.size(), s.owned);
-  pc::ParcelMeshCoupler coupler(s.grid, owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
-                                pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   const Parcels parcels(s, 400);
   const pc::TransferStats stats = coupler.beginStep(parcels.batch());
   EXPECT_EQ(pc::test::sumOverRanks(static_cast<double>(stats.orphans)), 0.0);
@@ -87,10 +90,6 @@ INSTANTIATE_TEST_SUITE_P(Kernels, Conservation, ::testing::Values("gaussian", "c
 // The squared-weight deposit gives sum_p w_pc^2 q_p on every owned cell, with w_pc read off a deposit of each
 // parcel alone (so at walls, in the corner and across ranks the weights are the coupler's own).
 TEST_P(Conservation, SquaredWeightsDepositTheSquaresOfTheParcelsWeights) {
-  LShapedDomain s;
-  pc::CellOwnerMap owners(MPI_COMM_WORLD, s.size(), s.owned);
-  pc::ParcelMeshCoupler coupler(s.grid, owners, pc::makeTransferKernel(GetParam()), pc::makeDragLaw("WenYu"),
-                                pc::DragLimits{0.3}, pc::GasProperties{1.2, 1.8e-5});
   const Parcels parcels(s, 30);
   coupler.beginStep(parcels.batch());
   const int n = static_cast<int>(parcels.dp.size());
