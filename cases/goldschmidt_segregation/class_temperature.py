@@ -22,8 +22,7 @@ import yaml
 from scipy.spatial import cKDTree
 
 
-def snapshot_temperatures(path, mesh, sharpness, periodic_depth, thin, rng):
-    f = h5py.File(path, "r")
+def snapshot_temperatures(f, mesh, sharpness, periodic_depth, thin, rng):
     x, v, t = f["position"][:], f["velocity"][:], f["type"][:]
     dp, npp = f["dp"][:], f["np"][:]
     if thin > 1:
@@ -78,10 +77,12 @@ def main():
         kernel = case["coupling"].get("kernel", {})
         periodic = int(case["liggghts"].get("variables", {}).get("periodic_depth", 0)) == 1
         for path in sorted(glob.glob(os.path.join(run, "parcels_*.h5"))):
-            time = float(h5py.File(path, "r")["time"][0])
-            if time <= 0.01:
-                continue
-            r = snapshot_temperatures(path, case["mesh"], kernel.get("sharpness", 1.0), periodic, args.thin, rng)
+            with h5py.File(path, "r") as snapshot:
+                time = float(snapshot["time"][0])
+                if time <= 0.01:
+                    continue
+                r = snapshot_temperatures(snapshot, case["mesh"], kernel.get("sharpness", 1.0), periodic, args.thin,
+                                          rng)
             print(f"{run}, {time:g}, " + "; ".join(
                 f"type {k}: {r[k][0]:.3e} / {r[k][1]:.3e}, n {r[k][2]:.1f}" for k in (1, 2)))
 

@@ -90,17 +90,15 @@ void ClassCollisionExchange::computeForces(ParcelMeshCoupler& coupler, const std
 }
 
 int ClassCollisionExchange::assignClasses(const ParcelBatch& parcels) {
-  held_.assign(types_, 0);
+  class_of_type_.assign(types_, 0);  // first whether this rank has a parcel of the type, then its class
   for (std::size_t p = 0; p < parcels.size; ++p) {
     const int t = parcels.type[p] - 1;
     PARCELFLOW_ASSERT(t >= 0 && t < types_, "a parcel's atom type is outside 1..ntypes");
-    held_[t] = 1;
+    class_of_type_[t] = 1;
   }
-  MPI_Allreduce(MPI_IN_PLACE, held_.data(), types_, MPI_INT, MPI_MAX, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, class_of_type_.data(), types_, MPI_INT, MPI_MAX, comm_);
   int classes = 0;
-  class_of_type_.assign(types_, -1);
-  for (int t = 0; t < types_; ++t)
-    if (held_[t]) class_of_type_[t] = classes++;
+  for (int& held : class_of_type_) held = held ? classes++ : -1;
   return classes;
 }
 

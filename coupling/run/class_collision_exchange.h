@@ -48,7 +48,7 @@ class ClassCollisionExchange {
   // kept from step to step
   std::vector<double> per_parcel_, on_cells_, accel_on_cells_, at_parcels_;
   std::vector<double> squared_mass_per_class_, squared_mass_on_cells_;  // m^2, and sum w^2 m^2 per cell and class
-  std::vector<int> held_, class_of_type_;  // per atom type: whether some rank's parcels have it; its class or -1
+  std::vector<int> class_of_type_;  // per atom type: its class this step, -1 if no rank's parcels have it
   std::vector<CollisionClass> classes_;
 };
 

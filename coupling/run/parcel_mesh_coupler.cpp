@@ -51,7 +51,6 @@ TransferStats ParcelMeshCoupler::beginStep(const ParcelBatch& parcels) {
   }
   const TransferStats stats = buildBoxStencils(kernel_, grid_, fluid_, parcels.size, parcels.x, stencils_,
                                                kernel_reads_diameters_ ? diameters_.data() : nullptr);
-  squared_current_ = false;
   // Every fluid cell of the box is exchanged (cells no window reaches carry zeros): the box is this
   // rank's parcels' neighbourhood, so it is about the cells the stencils touch.
   touched_.clear();
@@ -77,14 +76,11 @@ void ParcelMeshCoupler::depositToOwners(const std::vector<double>& per_parcel, i
 
 void ParcelMeshCoupler::depositSquaredWeightsToOwners(const std::vector<double>& per_parcel, int width,
                                                       std::vector<double>& owned) {
-  if (!squared_current_) {
-    // separable weights: squaring each axis' factors (the z factors carry the renormalisation) squares w
-    squared_stencils_ = stencils_;
-    for (Window& w : squared_stencils_.windows)
-      for (int axis = 0; axis < 3; ++axis)
-        for (int a = 0; a < w.n[axis]; ++a) w.f[axis][a] *= w.f[axis][a];
-    squared_current_ = true;
-  }
+  // separable weights: squaring each axis' factors (the z factors carry the renormalisation) squares w
+  squared_stencils_ = stencils_;
+  for (Window& w : squared_stencils_.windows)
+    for (int axis = 0; axis < 3; ++axis)
+      for (int a = 0; a < w.n[axis]; ++a) w.f[axis][a] *= w.f[axis][a];
   depositWith(squared_stencils_, true, per_parcel, width, owned);
 }
 

@@ -124,8 +124,7 @@ class ParcelMeshCoupler {
   ParcelBatch parcels_;
   std::vector<double> diameters_;       // this step's collision diameters, if the kernel reads them
   BoxStencils stencils_;                // this step's stencils
-  BoxStencils squared_stencils_;        // their weights squared, built when first asked for in a step
-  bool squared_current_ = false;
+  BoxStencils squared_stencils_;        // their weights squared (depositSquaredWeightsToOwners' work array)
   std::vector<long> touched_;           // the box's fluid cells (background index), exchanged with owners
   std::vector<long> box_of_touched_;    // their box index
   std::vector<double> touched_fraction_;  // their fluid share (below 1 where a wall cuts them)

@@ -144,12 +144,15 @@ TEST(ClassCollisionExchange, InOneCellEachParcelGetsItsMassTimesItsClassAccelera
     }
 }
 
-// An atom type no parcel has (the walls' type of a script) is no class: the same forces as without it.
-TEST(ClassCollisionExchange, ATypeWithoutParcelsChangesNothing) {
+// Atom types no parcel has (a script's walls' type) are no classes: the large beads as type 3 of 5, with types 2,
+// 4 and 5 empty, get the forces they get as type 2 of 2.
+TEST(ClassCollisionExchange, TypesWithoutParcelsChangeNothing) {
   Box box;
   const Mixture parcels(600, 8.0, {0.0, 0.0, 0.0}, {0.08, 0.04, 0.08}, 17 + box.rank);
+  Mixture renumbered = parcels;
+  for (int& type : renumbered.type) type = type == 2 ? 3 : type;
   const Forces two = classCollisionForces(box, parcels, "gaussian", {0.97, 0.1}, 0.45, 1e-4);
-  const Forces five = classCollisionForces(box, parcels, "gaussian", {0.97, 0.1}, 0.45, 1e-4, 5);
+  const Forces five = classCollisionForces(box, renumbered, "gaussian", {0.97, 0.1}, 0.45, 1e-4, 5);
   ASSERT_EQ(two.force.size(), five.force.size());
   for (std::size_t i = 0; i < two.force.size(); ++i) EXPECT_EQ(two.force[i], five.force[i]);
 }
