@@ -17,7 +17,7 @@ build=${PARCELFLOW_BUILD_DIR:-$root/build}
 packages=(cmake g++ make pkg-config
           libliggghts-dev liggghts liggghts-doc libopenmpi-dev openmpi-bin
           libeigen3-dev libhdf5-openmpi-dev libmetis-dev libyaml-cpp-dev libgtest-dev libhypre-dev libcgal-dev
-          python3 python3-numpy python3-matplotlib python3-h5py python3-yaml)
+          python3 python3-numpy python3-scipy python3-matplotlib python3-h5py python3-yaml)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

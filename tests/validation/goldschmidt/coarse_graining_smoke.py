@@ -10,8 +10,11 @@ variant and writes the table, and that each bed is what it must be, from the par
 each class with one np and dp, both classes present, and the solid mass of every coarse bed equal to the fine
 bed's within the mass of one of its parcels. np8_linear runs once more with coupling.class_collisions: it must
 finish, report its uncorrected cell-steps (none: both classes have l = 2) and move its parcels otherwise than
-the run without (the force reaches them). class_temperature.py reads the fine and np 8 runs' last snapshots:
-finite temperatures, the unbiased at least the taken one, and about 8 times fewer parcels per kernel for np 8.
+the run without (the force reaches them); it dumps its contacts in bursts (liggghts.variables.contact_period)
+and contact_exchange.py reads them: at least two bursts, large parcels touching small ones, finite powers (the
+script checks that the dumped force is the one on the pair's first sphere). class_temperature.py reads the fine
+and np 8 runs' last snapshots: finite temperatures, the unbiased at least the taken one, and about 8 times
+fewer parcels per kernel for np 8.
 The temporary folder is removed at the end.
 
 usage: coarse_graining_smoke.py PARCELFLOW MPIEXEC...
@@ -64,8 +67,10 @@ def main():
         root_cc = os.path.join(work, "runs_class_collisions")
         run([sys.executable, SCRIPT, parcelflow, root_cc, "np8_linear", "--case", case, "--end", "0.02", "--start",
              "0.01", "--ranks", ranks, "--mpirun", shlex.join(mpirun),
-             "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}"])
+             "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}",
+             "--set", "liggghts.variables.contact_period=96"])
         check_class_collisions(os.path.join(root, "np8_linear", "run"), os.path.join(root_cc, "np8_linear", "run"))
+        check_contact_exchange(os.path.join(root_cc, "np8_linear"))
         check_class_temperature(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
     expect_nothing_left(work, here_before)
     print("PASS")
@@ -107,6 +112,21 @@ def check_class_collisions(without, with_model):
           f"coupling.class_collisions")
     if heights[0] == heights[1]:
         fail("coupling.class_collisions left every parcel where it was without it: no force reached them")
+
+
+def check_contact_exchange(variant):
+    script = os.path.join(CASES, "goldschmidt_segregation", "contact_exchange.py")
+    out = run([sys.executable, script, os.path.join(variant, "run"), os.path.join(variant, "case", "contacts"),
+               "--tmin", "0"])
+    print(out)
+    bursts = re.search(r": (\d+) bursts from", out)
+    rows = re.findall(r"^\[[\d.]+, [\d.]+\), (\d+), (\S+), (\S+) / (\S+), (\S+)$", out, re.M)
+    if not bursts or int(bursts.group(1)) < 2:
+        fail("contact_exchange.py found fewer than 2 complete bursts of contact dumps")
+    if not rows or not all(math.isfinite(float(x)) for row in rows for x in row):
+        fail("contact_exchange.py printed no finite row")
+    if sum(int(r[0]) * float(r[1]) for r in rows) <= 0:
+        fail("contact_exchange.py: no large parcel touched a small one")
 
 
 def check_class_temperature(fine, coarse):
