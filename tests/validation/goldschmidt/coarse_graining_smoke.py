@@ -12,7 +12,8 @@ bed's within the mass of one of its parcels. np8_linear runs once more with coup
 finish, report its uncorrected cell-steps (none: both classes have l = 2) and move its parcels otherwise than
 the run without (the force reaches them); it dumps its contacts in bursts (liggghts.variables.contact_period)
 and contact_exchange.py reads them: at least two bursts, large parcels touching small ones, finite powers (the
-script checks that the dumped force is the one on the pair's first sphere). class_temperature.py reads the fine
+script checks that the dumped force is the one on the pair's first sphere); dispersion.py reads the same
+bursts: finite, positive dispersion coefficients for both classes. class_temperature.py reads the fine
 and np 8 runs' last snapshots: finite temperatures, the unbiased at least the taken one, and about 8 times
 fewer parcels per kernel for np 8.
 The temporary folder is removed at the end.
@@ -70,7 +71,7 @@ def main():
              "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}",
              "--set", "liggghts.variables.contact_period=96"])
         check_class_collisions(os.path.join(root, "np8_linear", "run"), os.path.join(root_cc, "np8_linear", "run"))
-        check_contact_exchange(os.path.join(root_cc, "np8_linear"))
+        check_contact_dumps(os.path.join(root_cc, "np8_linear"))
         check_class_temperature(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
     expect_nothing_left(work, here_before)
     print("PASS")
@@ -114,10 +115,10 @@ def check_class_collisions(without, with_model):
         fail("coupling.class_collisions left every parcel where it was without it: no force reached them")
 
 
-def check_contact_exchange(variant):
+def check_contact_dumps(variant):
+    contacts = os.path.join(variant, "case", "contacts")
     script = os.path.join(CASES, "goldschmidt_segregation", "contact_exchange.py")
-    out = run([sys.executable, script, os.path.join(variant, "run"), os.path.join(variant, "case", "contacts"),
-               "--tmin", "0"])
+    out = run([sys.executable, script, os.path.join(variant, "run"), contacts, "--tmin", "0"])
     print(out)
     bursts = re.search(r": (\d+) bursts from", out)
     rows = re.findall(r"^\[[\d.]+, [\d.]+\), (\d+), (\S+), (\S+) / (\S+), (\S+)$", out, re.M)
@@ -127,6 +128,12 @@ def check_contact_exchange(variant):
         fail("contact_exchange.py printed no finite row")
     if sum(int(r[0]) * float(r[1]) for r in rows) <= 0:
         fail("contact_exchange.py: no large parcel touched a small one")
+    script = os.path.join(CASES, "goldschmidt_segregation", "dispersion.py")
+    out = run([sys.executable, script, contacts, "--tmin", "0", "--lags", "1"])
+    print(out)
+    coefficients = [float(x) for x in re.findall(r"D_[zx] (\S+) cm2/s", out)]
+    if len(coefficients) != 4 or not all(math.isfinite(x) and x > 0 for x in coefficients):
+        fail(f"dispersion.py printed {coefficients}, expected D_z and D_x of both classes, finite and positive")
 
 
 def check_class_temperature(fine, coarse):
