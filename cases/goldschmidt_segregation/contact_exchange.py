@@ -76,6 +76,21 @@ class Boxes:
         return out
 
 
+def bursts(folder, tmin):
+    """[(coupled time of its first step, its steps)] of every burst of consecutive dumped steps (the spheres'
+    dumps, atm.STEP.txt) that starts at a coupled time of at least tmin; coupled_step.txt gives the time."""
+    coupled_step, dem_step = open(os.path.join(folder, "coupled_step.txt")).read().split()[:2]
+    coupled_step, dem_step = int(coupled_step), float(dem_step)
+    runs = []
+    for step in sorted(int(re.search(r"atm\.(\d+)\.txt$", f).group(1))
+                       for f in glob.glob(os.path.join(folder, "atm.*.txt"))):
+        if runs and step == runs[-1][-1] + 1:
+            runs[-1].append(step)
+        else:
+            runs.append([step])
+    return [((r[0] - coupled_step) * dem_step, r) for r in runs if (r[0] - coupled_step) * dem_step >= tmin]
+
+
 def check_force_on_first(pairs, name):
     """The dump's force is taken as the one on the pair's first sphere: then it pushes that sphere away from
     the second one, (x_i - x_j).F > 0, in every pair but those that a periodic boundary separates."""
@@ -87,8 +102,10 @@ def check_force_on_first(pairs, name):
                          f"{100 * away.mean():.0f} % of the pairs: not the force on the first sphere")
 
 
-def burst_sums(folder, first, steps, boxes, restitution, friction):
-    """Per large sphere of one burst: its phi bin, -F.w and the kinetic theory's c J |w|^2 (horizontal)."""
+def burst_sums(folder, steps, boxes, restitution, friction):
+    """Per large sphere of one burst (its steps, the spheres from the first): its phi bin, -F.w and the kinetic
+    theory's c J |w|^2 (horizontal)."""
+    first = steps[0]
     atoms = np.loadtxt(os.path.join(folder, f"atm.{first}.txt"), skiprows=9, ndmin=2)
     ids, kind, mass, radius = atoms[:, 0].astype(int), atoms[:, 1].astype(int), atoms[:, 2], atoms[:, 3]
     x, v = atoms[:, 4:7], atoms[:, 7:10]
@@ -147,27 +164,16 @@ def main():
     args = p.parse_args()
     case = yaml.safe_load(open(os.path.join(args.run, "request.yaml")))["case"]
     periodic_y = int(case["liggghts"].get("variables", {}).get("periodic_depth", 0)) == 1
-    coupled_step, dem_step = open(os.path.join(args.contacts, "coupled_step.txt")).read().split()[:2]
-    coupled_step, dem_step = int(coupled_step), float(dem_step)
     boxes = Boxes(case["mesh"], args.box, periodic_y)
-    steps = sorted(int(re.search(r"con\.(\d+)\.txt$", f).group(1))
-                   for f in glob.glob(os.path.join(args.contacts, "con.*.txt")))
-    bursts = []  # runs of consecutive steps
-    for step in steps:
-        if bursts and step == bursts[-1][-1] + 1:
-            bursts[-1].append(step)
-        else:
-            bursts.append([step])
     bins = len(PHI_BINS) - 1
     total = {k: np.zeros(bins) for k in ("spheres", "measured", "theory", "contacts")}
     used = 0
-    for burst in bursts:
+    for _, burst in bursts(args.contacts, args.tmin):
         members = burst[:args.window]
-        if len(members) < args.window or (members[0] - coupled_step) * dem_step < args.tmin:
+        if len(members) < args.window:
             continue
         used += 1
-        where, measured, theory, contacts = burst_sums(args.contacts, members[0], members, boxes, args.restitution,
-                                                       args.friction)
+        where, measured, theory, contacts = burst_sums(args.contacts, members, boxes, args.restitution, args.friction)
         for b in range(bins):
             s = where == b
             for key, values in (("measured", measured), ("theory", theory), ("contacts", contacts)):

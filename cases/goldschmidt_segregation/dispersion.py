@@ -12,22 +12,19 @@ beads and coarse-grained parcels of one bed over the same times, the ratio of th
 more) the parcels are mixed by the bed's motion.
 """
 import argparse
-import glob
 import os
-import re
 
 import numpy as np
+
+from contact_exchange import bursts  # the same file, the same bursts
 
 
 def burst_starts(folder, tmin):
     """(coupled time, sphere rows sorted by id) at the first step of every burst from tmin on."""
-    coupled_step, dem_step = open(os.path.join(folder, "coupled_step.txt")).read().split()[:2]
-    coupled_step, dem_step = int(coupled_step), float(dem_step)
-    steps = set(int(re.search(r"atm\.(\d+)\.txt$", f).group(1)) for f in glob.glob(os.path.join(folder, "atm.*.txt")))
     starts = []
-    for step in sorted(s for s in steps if s - 1 not in steps and (s - coupled_step) * dem_step >= tmin):
-        spheres = np.loadtxt(os.path.join(folder, f"atm.{step}.txt"), skiprows=9, ndmin=2)
-        starts.append(((step - coupled_step) * dem_step, spheres[np.argsort(spheres[:, 0])]))
+    for time, steps in bursts(folder, tmin):
+        spheres = np.loadtxt(os.path.join(folder, f"atm.{steps[0]}.txt"), skiprows=9, ndmin=2)
+        starts.append((time, spheres[np.argsort(spheres[:, 0])]))
     return starts
 
 

@@ -68,7 +68,7 @@ class ContactExchange(unittest.TestCase):
         with tempfile.TemporaryDirectory(prefix="pf_contact_exchange_") as folder:
             steps = [100, 101, 102, 103]
             write_burst(folder, steps, push=-1e-3)
-            where, measured, theory, contacts = contact_exchange.burst_sums(folder, 100, steps, boxes, 0.97, 0.1)
+            where, measured, theory, contacts = contact_exchange.burst_sums(folder, steps, boxes, 0.97, 0.1)
         self.assertEqual(len(measured), 1)
         self.assertAlmostEqual(measured[0], 30 * 1e-3 * 0.1, places=12)  # -F.w, F = -0.03 N, w = 0.1 m/s
         self.assertAlmostEqual(contacts[0], 30.0)
@@ -79,7 +79,7 @@ class ContactExchange(unittest.TestCase):
         with tempfile.TemporaryDirectory(prefix="pf_contact_exchange_") as folder:
             write_burst(folder, [100], push=+1e-3)  # pulls the large sphere towards the small ones
             with self.assertRaises(SystemExit) as refused:
-                contact_exchange.burst_sums(folder, 100, [100], boxes, 0.97, 0.1)
+                contact_exchange.burst_sums(folder, [100], boxes, 0.97, 0.1)
         self.assertIn("not the force on the first sphere", str(refused.exception))
 
 
