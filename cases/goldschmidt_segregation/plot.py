@@ -2,8 +2,8 @@
 """Plots of a goldschmidt_segregation run: the mean height of each size class against time (the measure
 Goldschmidt used), the bed pressure drop against the bed weight, and solids-fraction snapshots from the
 HDF5 fields (six times over the run, and the last second's snapshots one after the other). Prints the
-segregation summary and the void measure over the last half of the run (or the last 10 s if longer) and, for
-a run of at least 4 s, the same in 2 s windows.
+segregation summary, the void measure and the mesoscale motion (mesoscale.py) over the last half of the run
+(or the last 10 s if longer) and, for a run of at least 4 s, the segregation and voids in 2 s windows.
 Usage: plot.py [OUTPUT_FOLDER] (default: output next to this file)."""
 import csv
 import os
@@ -14,6 +14,7 @@ import matplotlib
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesoscale  # noqa: E402
 import void_shape  # noqa: E402
 
 matplotlib.use("Agg")
@@ -110,6 +111,11 @@ voids = void_measure(t[window][0])
 print(f"voids over {voids['snapshots']} field snapshots of the same window (void_shape.py): a bed-wide gas layer in "
       f"{100 * voids['layer_share']:.0f} %, {voids['bubbles_per_snapshot']:.2f} bubbles per snapshot, mean bubble width "
       f"{1000 * voids['mean_bubble_width']:.1f} mm, lateral spread of the gas fraction {voids['lateral_spread']:.3f}")
+motion = mesoscale.run_measure(folder, t[window][0], t[-1], 3)
+if motion:
+    print(f"mesoscale motion over the same window (mesoscale.py, boxes of 3 x 3 cells): box-velocity variance of the "
+          f"solids x {1e4 * motion['solids_var_x']:.1f}, z {1e4 * motion['solids_var_z']:.1f} cm2/s2, of the gas "
+          f"x {1e4 * motion['gas_var_x']:.0f}, z {1e4 * motion['gas_var_z']:.0f} cm2/s2")
 print(f"plot written: {heights_png}")
 
 # A longer run in 2 s windows: how the segregation develops and whether the voids change with it.

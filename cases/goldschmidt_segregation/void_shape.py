@@ -67,16 +67,22 @@ def depth_slices(gas_fraction, centres, fractions):
     return out
 
 
-def voids(a):
-    """The voids of a[z, x] as lists of (z, x) cells (module docstring)."""
-    nz, nx = a.shape
+def inside_bed(a):
+    """The cells of a[z, x] inside the bed: in each column, those up to its highest cell with solids fraction
+    above SURFACE_SOLIDS."""
     solid = (1.0 - a) > SURFACE_SOLIDS
     inside = np.zeros_like(solid)
-    for x in range(nx):
+    for x in range(a.shape[1]):
         rows = np.nonzero(solid[:, x])[0]
         if len(rows):
             inside[: rows.max() + 1, x] = True
-    void = inside & (a > VOID_GAS)
+    return inside
+
+
+def voids(a):
+    """The voids of a[z, x] as lists of (z, x) cells (module docstring)."""
+    nz, nx = a.shape
+    void = inside_bed(a) & (a > VOID_GAS)
     seen = np.zeros_like(void)
     found = []
     for z0, x0 in zip(*np.nonzero(void)):

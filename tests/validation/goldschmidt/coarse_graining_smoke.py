@@ -13,9 +13,10 @@ finish, report its uncorrected cell-steps (none: both classes have l = 2) and mo
 the run without (the force reaches them); it dumps its contacts in bursts (liggghts.variables.contact_period)
 and contact_exchange.py reads them: at least two bursts, large parcels touching small ones, finite powers (the
 script checks that the dumped force is the one on the pair's first sphere); dispersion.py reads the same
-bursts: finite, positive dispersion coefficients for both classes. class_temperature.py reads the fine
-and np 8 runs' last snapshots: finite temperatures, the unbiased at least the taken one, and about 8 times
-fewer parcels per kernel for np 8.
+bursts: finite, positive dispersion coefficients for both classes; granular_rheology.py too: finite rows of
+stress and shear rate. class_temperature.py reads the fine and np 8 runs' last snapshots: finite
+temperatures, the unbiased at least the taken one, and about 8 times fewer parcels per kernel for np 8;
+mesoscale.py reads their snapshots: finite, non-negative variances.
 The temporary folder is removed at the end.
 
 usage: coarse_graining_smoke.py PARCELFLOW MPIEXEC...
@@ -73,6 +74,7 @@ def main():
         check_class_collisions(os.path.join(root, "np8_linear", "run"), os.path.join(root_cc, "np8_linear", "run"))
         check_contact_dumps(os.path.join(root_cc, "np8_linear"))
         check_class_temperature(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
+        check_mesoscale(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
     expect_nothing_left(work, here_before)
     print("PASS")
 
@@ -134,6 +136,22 @@ def check_contact_dumps(variant):
     coefficients = [float(x) for x in re.findall(r"D_[zx] (\S+) cm2/s", out)]
     if len(coefficients) != 4 or not all(math.isfinite(x) and x > 0 for x in coefficients):
         fail(f"dispersion.py printed {coefficients}, expected D_z and D_x of both classes, finite and positive")
+    script = os.path.join(CASES, "goldschmidt_segregation", "granular_rheology.py")
+    out = run([sys.executable, script, os.path.join(variant, "run"), contacts, "--tmin", "0"])
+    print(out)
+    rows = re.findall(r"^\[[\d.]+, [\d.]+\), (\d+), (\S+), (\S+), (\S+), (\S+)$", out, re.M)
+    if not rows or not all(math.isfinite(float(x)) for row in rows for x in row):
+        fail("granular_rheology.py printed no finite row of solids fraction, shear rate, pressure, viscosity")
+
+
+def check_mesoscale(fine, coarse):
+    script = os.path.join(CASES, "goldschmidt_segregation", "mesoscale.py")
+    out = run([sys.executable, script, fine, coarse, "--start", "0"])
+    print(out)
+    rows = re.findall(r"^.{40} +\d+((?: +\S+){6})$", out, re.M)
+    values = [float(x) for row in rows for x in row.split()]
+    if len(rows) != 2 or not all(math.isfinite(x) and x >= 0 for x in values):
+        fail(f"mesoscale.py printed {rows}, expected one row of six finite, non-negative values per run")
 
 
 def check_class_temperature(fine, coarse):
