@@ -59,9 +59,9 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                                   1e3 * sizes.smallest_dp, 1e3 * sizes.largest_dp, length_ratio, kMixtureLengthRatio) +
                     "coarse-grained size mixtures segregated by size more than their particles in the measured bed "
                     "(the Goldschmidt beads with a periodic depth, over 10-20 s: beads -0.001, l = 1.5 0.030, l = 2 "
-                    "0.774, l = 2 with coupling.class_collisions 0.17-0.33): at one stress, parcels l times wider "
-                    "shear about l times slower, and the bed's mixing motion there fell to half the particles' at "
-                    "l = 2 (0.75 at l = 1.5); " +
+                    "0.774, l = 2 with coupling.class_collisions 0.17-0.33): under one stress the parcels' emulsion "
+                    "sheared about l times slower than the particles', and the bed's mixing motion there fell to "
+                    "half the particles' at l = 2 (0.75 at l = 1.5); " +
                     (reach.class_collisions
                          ? std::string("coupling.class_collisions (on) restores the classes' collisions the parcels "
                                        "miss, not all of the particles' mixing")
