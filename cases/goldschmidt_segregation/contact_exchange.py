@@ -76,6 +76,13 @@ class Boxes:
         return out
 
 
+def run_mesh(run):
+    """(mesh, periodic in y) of a Goldschmidt run folder: its request.yaml's mesh and
+    liggghts.variables.periodic_depth."""
+    case = yaml.safe_load(open(os.path.join(run, "request.yaml")))["case"]
+    return case["mesh"], int(case["liggghts"].get("variables", {}).get("periodic_depth", 0)) == 1
+
+
 def bursts(folder, tmin):
     """[(coupled time of its first step, its steps)] of every burst of consecutive dumped steps (the spheres'
     dumps, atm.STEP.txt) that starts at a coupled time of at least tmin; coupled_step.txt gives the time."""
@@ -162,9 +169,8 @@ def main():
     p.add_argument("--restitution", type=float, default=0.97)
     p.add_argument("--friction", type=float, default=0.1)
     args = p.parse_args()
-    case = yaml.safe_load(open(os.path.join(args.run, "request.yaml")))["case"]
-    periodic_y = int(case["liggghts"].get("variables", {}).get("periodic_depth", 0)) == 1
-    boxes = Boxes(case["mesh"], args.box, periodic_y)
+    mesh, periodic_y = run_mesh(args.run)
+    boxes = Boxes(mesh, args.box, periodic_y)
     bins = len(PHI_BINS) - 1
     total = {k: np.zeros(bins) for k in ("spheres", "measured", "theory", "contacts")}
     used = 0

@@ -21,9 +21,8 @@ import argparse
 import os
 
 import numpy as np
-import yaml
 
-from contact_exchange import bursts  # the same file, the same bursts
+from contact_exchange import bursts, run_mesh  # the same files, the same bursts
 
 PHI_BINS = ((0.3, 0.45), (0.45, 0.55), (0.55, 0.6), (0.6, 0.7))
 I_BINS = ((0.0, 0.01), (0.01, 0.03), (0.03, 0.1), (0.1, 0.3), (0.3, 1.0), (1.0, 10.0))
@@ -34,7 +33,7 @@ LEAST_PRESSURE = 0.5  # Pa: boxes below it have no friction to speak of
 class Grid:
     """Boxes of box x box cells in x-z over the whole depth of the run's mesh."""
 
-    def __init__(self, mesh, box, periodic_y):
+    def __init__(self, mesh, periodic_y, box):
         cells = np.array(mesh["cells"])
         lengths = np.array(mesh["lengths"], dtype=float)
         self.h = lengths[0] / cells[0] * box
@@ -51,7 +50,7 @@ class Grid:
 
 
 def box_state(grid, atoms, contact_steps):
-    """Per box (flat arrays): solids fraction, mass, mean diameter, mean velocity (x, z), sigma_xz and P.
+    """Per box (flat arrays): solids fraction, mean diameter, mean velocity (x, z), sigma_xz and P.
     atoms: rows id type mass radius x y z vx vy vz; contact_steps: one array of contact rows (pos_i, pos_j, v_i,
     v_j, id_i, id_j, periodic, f on i) per DEM step."""
     n = grid.shape[0] * grid.shape[1]
@@ -75,7 +74,7 @@ def box_state(grid, atoms, contact_steps):
         f = pairs[:, 15:18]
         shear += -np.bincount(at, 0.5 * (f[:, 0] * r[:, 2] + f[:, 2] * r[:, 0]), n) / grid.volume / len(contact_steps)
         pressure += np.bincount(at, np.sum(f * r, axis=1), n) / (3 * grid.volume) / len(contact_steps)
-    return phi, m, diameter, u[:, 0], u[:, 2], shear, pressure
+    return phi, diameter, u[:, 0], u[:, 2], shear, pressure
 
 
 def shear_rates(grid, ux, uz, phi):
@@ -107,9 +106,7 @@ def main():
     args = p.parse_args()
     if args.box < 1 or args.steps < 1:
         raise SystemExit(f"--box {args.box}, --steps {args.steps}: both must be at least 1")
-    case = yaml.safe_load(open(os.path.join(args.run, "request.yaml")))["case"]
-    periodic_y = int(case["liggghts"].get("variables", {}).get("periodic_depth", 0)) == 1
-    grid = Grid(case["mesh"], args.box, periodic_y)
+    grid = Grid(*run_mesh(args.run), args.box)
     samples, used, density = [], 0, None
     for time, steps in bursts(args.contacts, args.tmin):
         if time > args.tmax:
@@ -119,7 +116,7 @@ def main():
         density = atoms[0, 2] / (4 / 3 * np.pi * atoms[0, 3] ** 3)
         contacts = [np.loadtxt(os.path.join(args.contacts, f"con.{s}.txt"), skiprows=9, ndmin=2)
                     for s in steps[:args.steps]]
-        phi, _, diameter, ux, uz, shear, pressure = box_state(grid, atoms, contacts)
+        phi, diameter, ux, uz, shear, pressure = box_state(grid, atoms, contacts)
         rate = shear_rates(grid, ux, uz, phi)
         ok = ~np.isnan(rate)
         samples.append(np.stack([phi[ok], rate[ok], shear[ok], pressure[ok], diameter[ok]], axis=1))

@@ -40,20 +40,20 @@ def snapshot(gas_fraction, gas_velocity, solids_velocity, centres, box):
     """(solids variance x, z; centre-of-mass velocity x, z; gas variance x, z) of one snapshot, per the module
     docstring; the fields given per cell at centres."""
     solids = 1.0 - gas_fraction
-    a, _ = void_shape.depth_averaged(gas_fraction, centres)
-    inside = void_shape.inside_bed(a)
-    s = box_sums(void_shape.depth_averaged(solids, centres)[0], inside, box)
-    cells = box_sums(np.ones_like(a), inside, box)
+    stacked = np.column_stack([gas_fraction, solids, solids[:, None] * solids_velocity[:, (0, 2)],
+                               gas_fraction[:, None] * gas_velocity[:, (0, 2)]])
+    averaged, _ = void_shape.depth_averaged(stacked, centres)
+    inside = void_shape.inside_bed(averaged[..., 0])
+    s = box_sums(averaged[..., 1], inside, box)
+    cells = box_sums(np.ones_like(averaged[..., 0]), inside, box)
     out_var, out_com, out_gas = [], [], []
-    for component in (0, 2):
-        momentum = box_sums(void_shape.depth_averaged(solids * solids_velocity[:, component], centres)[0],
-                            inside, box)
+    for k in range(2):  # x, z
+        momentum = box_sums(averaged[..., 2 + k], inside, box)
         com = momentum.sum() / s.sum()
         held = s > 0
         out_var.append(float(np.sum(s[held] * (momentum[held] / s[held] - com) ** 2) / s.sum()))
         out_com.append(float(com))
-        flux = box_sums(void_shape.depth_averaged(gas_fraction * gas_velocity[:, component], centres)[0],
-                        inside, box)
+        flux = box_sums(averaged[..., 4 + k], inside, box)
         mean = flux.sum() / cells.sum()
         held = cells > 0
         out_gas.append(float(np.sum(cells[held] * (flux[held] / cells[held] - mean) ** 2) / cells.sum()))

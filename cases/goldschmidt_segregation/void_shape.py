@@ -27,7 +27,8 @@ MIN_CELLS = 4
 
 def depth_averaged(gas_fraction, centres):
     """Reshape a field given per cell (gas_fraction[i] at centres[i] = (x, y, z)) to a[z, x], averaged over
-    the cells across the depth y. Returns (a, dx)."""
+    the cells across the depth y; fields stacked along further axes (gas_fraction[i, k]) give a[z, x, k].
+    Returns (a, dx)."""
     spacing, index = [], []
     for d in range(3):
         values = np.unique(np.round(centres[:, d], 9))
@@ -35,13 +36,13 @@ def depth_averaged(gas_fraction, centres):
         spacing.append(step)
         index.append(np.rint((centres[:, d] - values[0]) / step).astype(int))
     nx, nz = index[0].max() + 1, index[2].max() + 1
-    total = np.zeros((nz, nx))
+    total = np.zeros((nz, nx) + np.shape(gas_fraction)[1:])
     count = np.zeros((nz, nx))
     np.add.at(total, (index[2], index[0]), gas_fraction)
     np.add.at(count, (index[2], index[0]), 1)
     if (count == 0).any():
         raise ValueError("the field does not cover every (x, z) column of a box mesh")
-    return total / count, spacing[0]
+    return total / count.reshape(count.shape + (1,) * (total.ndim - 2)), spacing[0]
 
 
 def depth_slices(gas_fraction, centres, fractions):
