@@ -2,10 +2,11 @@
 """How strongly the bed moves at the scale of its bubbles: the solids' and the gas's box-averaged velocity
 fluctuations from a run's field snapshots (issue 29).
 
-usage: mesoscale.py RUN [RUN ...] [--start 10] [--end T] [--box 3]
+usage: mesoscale.py RUN [RUN ...] [--start 10] [--end T] [--box 3] [--slices]
 
 Each snapshot (fields_*.h5: gas_fraction, gas_velocity, solids_velocity per cell) is averaged over the depth
-onto the mesh's rows and columns (z, x), the solids velocity weighted by the solids fraction and the gas
+onto the mesh's rows and columns (z, x) (with --slices, for a bed as deep as it is wide: taken on the slices at
+1/4, 1/2 and 3/4 of the depth, each measured alone and the measures averaged), the solids velocity weighted by the solids fraction and the gas
 velocity taken superficial (times the gas fraction), and then summed over boxes of BOX x BOX of those cells,
 counting only the cells inside the bed (void_shape.py's surface). Per snapshot:
 - solids: the variance of the boxes' solids velocity about the bed's centre-of-mass velocity, weighted by the
@@ -36,13 +37,17 @@ def box_sums(field, inside, box):
     return out
 
 
-def snapshot(gas_fraction, gas_velocity, solids_velocity, centres, box):
-    """(solids variance x, z; centre-of-mass velocity x, z; gas variance x, z) of one snapshot, per the module
-    docstring; the fields given per cell at centres."""
-    solids = 1.0 - gas_fraction
-    stacked = np.column_stack([gas_fraction, solids, solids[:, None] * solids_velocity[:, (0, 2)],
-                               gas_fraction[:, None] * gas_velocity[:, (0, 2)]])
-    averaged, _ = void_shape.depth_averaged(stacked, centres)
+def planes(stacked, centres, slices):
+    """The cell fields stacked[i, k] as planes [a[z, x, k], ...]: the depth average of a quasi-2D bed, or the
+    slices of a bed as deep as it is wide (where a depth average would smooth its motion away)."""
+    if slices:
+        return [a for a, _ in void_shape.depth_slices(stacked, centres, void_shape.DEPTH_SLICES)]
+    return [void_shape.depth_averaged(stacked, centres)[0]]
+
+
+def plane_measure(averaged, box):
+    """(solids variance x, z; centre-of-mass velocity x, z; gas variance x, z) of one plane of the stacked
+    fields (gas fraction, solids fraction, solids momentum x, z, superficial gas velocity x, z)."""
     inside = void_shape.inside_bed(averaged[..., 0])
     s = box_sums(averaged[..., 1], inside, box)
     cells = box_sums(np.ones_like(averaged[..., 0]), inside, box)
@@ -60,7 +65,16 @@ def snapshot(gas_fraction, gas_velocity, solids_velocity, centres, box):
     return out_var + out_com + out_gas
 
 
-def run_measure(folder, start, end, box):
+def snapshot(gas_fraction, gas_velocity, solids_velocity, centres, box, slices=False):
+    """(solids variance x, z; centre-of-mass velocity x, z; gas variance x, z) of one snapshot, per the module
+    docstring (on slices: the mean over the slices); the fields given per cell at centres."""
+    solids = 1.0 - gas_fraction
+    stacked = np.column_stack([gas_fraction, solids, solids[:, None] * solids_velocity[:, (0, 2)],
+                               gas_fraction[:, None] * gas_velocity[:, (0, 2)]])
+    return list(np.mean([plane_measure(a, box) for a in planes(stacked, centres, slices)], axis=0))
+
+
+def run_measure(folder, start, end, box, slices=False):
     """{"snapshots", "solids_var_x", "solids_var_z", "com_rms_x", "com_rms_z", "gas_var_x", "gas_var_z"} over the
     run's snapshots with start <= time <= end (SI units: m2/s2 and m/s); None without such a snapshot."""
     with h5py.File(os.path.join(folder, "fields_mesh.h5"), "r") as f:
@@ -71,7 +85,7 @@ def run_measure(folder, start, end, box):
             time = float(np.asarray(f["time"])[0])
             if start - 1e-9 <= time <= end + 1e-9:
                 rows.append(snapshot(np.asarray(f["gas_fraction"]), np.asarray(f["gas_velocity"]),
-                                     np.asarray(f["solids_velocity"]), centres, box))
+                                     np.asarray(f["solids_velocity"]), centres, box, slices))
     if not rows:
         return None
     r = np.array(rows)
@@ -86,15 +100,19 @@ def main():
     p.add_argument("--start", type=float, default=10.0, help="first snapshot time [s]")
     p.add_argument("--end", type=float, default=float("inf"), help="last snapshot time [s]")
     p.add_argument("--box", type=int, default=3, help="box edge in cells")
+    p.add_argument("--slices", action="store_true",
+                   help="a bed as deep as it is wide: measure on the slices at 1/4, 1/2 and 3/4 of the depth and "
+                        "average, instead of over the depth")
     args = p.parse_args()
     if args.box < 1:
         raise SystemExit(f"--box {args.box}: the box edge must be at least 1 cell")
-    print(f"boxes of {args.box} x {args.box} cells over the depth, snapshots at t = {args.start:g}-{args.end:g} s; "
+    where = "on slices at 1/4, 1/2, 3/4 of the depth" if args.slices else "over the depth"
+    print(f"boxes of {args.box} x {args.box} cells {where}, snapshots at t = {args.start:g}-{args.end:g} s; "
           "solids and gas box-velocity variance [cm2/s2], centre-of-mass velocity rms [cm/s]")
     print(f"{'run':40s} {'snaps':>5s} {'solids x':>9s} {'solids z':>9s} {'com x':>6s} {'com z':>6s} "
           f"{'gas x':>7s} {'gas z':>7s}")
     for folder in args.runs:
-        m = run_measure(folder, args.start, args.end, args.box)
+        m = run_measure(folder, args.start, args.end, args.box, args.slices)
         if m is None:
             raise SystemExit(f"{folder}: no field snapshot between t = {args.start:g} and {args.end:g} s")
         print(f"{folder[-40:]:40s} {m['snapshots']:5d} {1e4 * m['solids_var_x']:9.1f} {1e4 * m['solids_var_z']:9.1f} "

@@ -23,6 +23,7 @@ VOID_GAS = 0.7
 SURFACE_SOLIDS = 0.3
 LAYER_SPAN = 0.8
 MIN_CELLS = 4
+DEPTH_SLICES = (0.25, 0.5, 0.75)  # where a bed as deep as it is wide is sliced (fractions of its depth)
 
 
 def depth_averaged(gas_fraction, centres):
@@ -48,7 +49,7 @@ def depth_averaged(gas_fraction, centres):
 def depth_slices(gas_fraction, centres, fractions):
     """The field on the rows of cells nearest to each of the depths y = fraction x (bed depth) of a 3D bed,
     as [(a[z, x], dx), ...] (void_shape measures a quasi-2D bed's depth average; a bed as deep as it is wide
-    is measured on slices instead)."""
+    is measured on slices instead); fields stacked along further axes (gas_fraction[i, k]) give a[z, x, k]."""
     index, values = [], []
     for d in range(3):
         values.append(np.unique(np.round(centres[:, d], 9)))
@@ -60,7 +61,7 @@ def depth_slices(gas_fraction, centres, fractions):
     for fraction in fractions:
         j = min(ny - 1, int(fraction * ny))
         on = index[1] == j
-        a = np.full((nz, nx), np.nan)
+        a = np.full((nz, nx) + np.shape(gas_fraction)[1:], np.nan)
         a[index[2][on], index[0][on]] = gas_fraction[on]
         if np.isnan(a).any():
             raise ValueError("the field does not cover every (x, z) cell of a box mesh slice")
@@ -115,6 +116,18 @@ def snapshot_measure(a, dx):
         else:
             widths.append(columns * dx)
     return has_layer, len(widths), widths
+
+
+def holdup(a):
+    """(share of the inside-bed cells of a[z, x] that lie in voids, layers included; mean gas fraction of the other
+    inside-bed cells, the emulsion): where a bed's expansion sits, in its voids or in a looser emulsion."""
+    inside = inside_bed(a)
+    in_voids = np.zeros_like(inside)
+    for group in voids(a):
+        in_voids[tuple(np.array(group).T)] = True
+    emulsion = inside & ~in_voids
+    return (float(in_voids.sum() / inside.sum()) if inside.any() else 0.0,
+            float(a[emulsion].mean()) if emulsion.any() else float("nan"))
 
 
 def lateral_spread(a):

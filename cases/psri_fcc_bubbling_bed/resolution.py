@@ -18,10 +18,15 @@ an unfinished run from its last checkpoint and skips a finished one, so the set 
 `--summary` only tabulates what has finished (RUNS/resolution.csv) and plots every dp/(g dz) profile with the
 experiment's 3.5 m (RUNS/resolution_profiles.png).
 
-usage: resolution.py PARCELFLOW RUNS [VARIANT ...] [--ranks N] [--mpirun CMD] [--end T] [--summary]
+The table and the plot take the variants not finished in RUNS from the record in resolution/ (table.csv and
+profiles.csv, each row with the date it was recorded); `--summary --record` writes the finished runs there, so
+that a study spread over sessions on machines that do not keep their runs can still be drawn whole.
+
+usage: resolution.py PARCELFLOW RUNS [VARIANT ...] [--ranks N] [--mpirun CMD] [--end T] [--summary [--record]]
 """
 import argparse
 import csv
+import datetime
 import glob
 import math
 import os
@@ -40,6 +45,7 @@ SPARGER_Z = 0.34                # the reduced case's sparger layer [m]
 EXPERIMENT_SURFACE = 3.5        # above the sparger [m]
 ZONES = ((0.4, 1.5), (1.5, 2.5), (2.5, 3.5), (3.5, 4.5))
 AVERAGE_FROM = 20.0
+RECORD = os.path.join(HERE, "resolution")  # the runs' rows and profiles, kept with the case (runs outlive no machine)
 
 
 def filtered(case):
@@ -180,15 +186,62 @@ def summarize(name, run):
     return row, (mid, rho)
 
 
+def read_record():
+    """The recorded table rows {variant: row} and profiles {variant: (mid, rho)} of RECORD (empty without it)."""
+    table, profiles = {}, {}
+    if os.path.exists(os.path.join(RECORD, "table.csv")):
+        with open(os.path.join(RECORD, "table.csv")) as f:
+            for row in csv.DictReader(f):
+                table[row["variant"]] = {k: v if k in ("variant", "recorded") else float(v) for k, v in row.items()}
+        points = {}
+        with open(os.path.join(RECORD, "profiles.csv")) as f:
+            for row in csv.DictReader(f):
+                points.setdefault(row["variant"], []).append((float(row["z"]), float(row["dp_over_g_dz"])))
+        profiles = {name: tuple(np.array(c) for c in zip(*rows)) for name, rows in points.items()}
+    return table, profiles
+
+
+def write_record(table, profiles):
+    """RECORD/table.csv and profiles.csv: the finished runs replace their variant's recorded rows."""
+    recorded_table, recorded_profiles = read_record()
+    today = datetime.date.today().isoformat()
+    for row in table:
+        recorded_table[row["variant"]] = dict(row, recorded=today)
+        recorded_profiles[row["variant"]] = profiles[row["variant"]]
+    os.makedirs(RECORD, exist_ok=True)
+    rows = [recorded_table[name] for name in VARIANTS if name in recorded_table]
+    with open(os.path.join(RECORD, "table.csv"), "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    with open(os.path.join(RECORD, "profiles.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["variant", "z", "dp_over_g_dz"])
+        for name in VARIANTS:
+            if name in recorded_profiles:
+                writer.writerows((name, f"{z:.6g}", f"{r:.6g}") for z, r in zip(*recorded_profiles[name]))
+    print(f"recorded in {RECORD}")
+
+
 def report(args):
+    """The table and the profiles of the finished runs in RUNS and, for the variants not finished there, of the
+    record (labelled with its date)."""
     table, profiles = [], {}
     for name in VARIANTS:
         run = os.path.join(args.runs, name, "run")
         if finished(run):
             row, profiles[name] = summarize(name, run)
-            table.append(row)
+            table.append(dict(row, recorded="this run"))
+    if args.record and table:
+        write_record([{k: v for k, v in row.items() if k != "recorded"} for row in table], profiles)
+    recorded_table, recorded_profiles = read_record()
+    for name in VARIANTS:
+        if name not in profiles and name in recorded_table:
+            table.append(recorded_table[name])
+            profiles[name] = recorded_profiles[name]
     if not table:
-        sys.exit("no finished variant to tabulate")
+        sys.exit("no finished variant to tabulate and none recorded")
+    table.sort(key=lambda row: list(VARIANTS).index(row["variant"]))
     path = os.path.join(args.runs, "resolution.csv")
     with open(path, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(table[0]))
@@ -201,8 +254,10 @@ def report(args):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(5, 7))
-    for name, (mid, rho) in profiles.items():
-        ax.plot(rho, mid, "o-", ms=2, label=name)
+    for row in table:
+        mid, rho = profiles[row["variant"]]
+        label = row["variant"] if row["recorded"] == "this run" else f"{row['variant']} ({row['recorded']})"
+        ax.plot(rho, mid, "o-", ms=2, label=label)
     ax.axhline(SPARGER_Z + EXPERIMENT_SURFACE, color="k", ls="--", lw=0.8, label="experiment's surface")
     ax.set_xlabel("dp / (g dz) [kg/m3]")
     ax.set_ylabel("height z [m]")
@@ -222,6 +277,8 @@ def main():
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--end", type=float, default=30.0)
     p.add_argument("--summary", action="store_true")
+    p.add_argument("--record", action="store_true",
+                   help="with --summary: keep the finished runs' rows and profiles in the case's resolution/ folder")
     args = p.parse_intermixed_args()
     args.runs = os.path.abspath(args.runs)
     args.parcelflow = os.path.abspath(args.parcelflow)

@@ -32,11 +32,11 @@ import yaml
 HERE = os.path.dirname(os.path.abspath(__file__))
 GOLDSCHMIDT = os.path.normpath(os.path.join(HERE, "..", "..", "goldschmidt_segregation"))
 sys.path.insert(0, GOLDSCHMIDT)
+import mesoscale  # noqa: E402
 import void_shape  # noqa: E402
 
 VARIANTS = ("fine", "np8_linear", "np27_linear", "d5mm_linear")
 PACKED_SHARE = 0.85
-SLICES = (0.25, 0.5, 0.75)
 # quantity: (relative tolerance of coarse against fine, unit, what it is)
 QUANTITIES = {
     "u_mf": (0.05, "m/s", "minimum fluidization velocity from the ramp"),
@@ -44,6 +44,13 @@ QUANTITIES = {
     "expansion": (0.05, "", "mean bead height over the window / the settled bed's"),
     "bubbles_per_slice": (0.15, "", "voids of the void measure per slice and snapshot"),
     "bubble_width_mm": (0.15, "mm", "mean width of those voids"),
+}
+# Printed beside the table, without a tolerance: where the expansion sits (in voids or in a looser emulsion) and
+# how much the solids move at the bubbles' scale.
+DIAGNOSTICS = {
+    "void_share": "share of the bed's cells in voids (layers included), slices, window mean",
+    "emulsion_gas_fraction": "mean gas fraction of the bed's other cells",
+    "solids_motion_z_cm2s2": "vertical box-velocity variance of the solids (mesoscale.py --slices, 3 x 3 cells)",
 }
 
 # The bed per size. Full: 75 x 75 mm (the 7.5 mm np 27 parcels are 10 across), 45,000 beads (a static bed of
@@ -126,21 +133,26 @@ def measure(run, geometry):
     ramp = t <= geometry["ramp_time"] + 1e-9
     with h5py.File(os.path.join(run, "fields_mesh.h5"), "r") as f:
         centres = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)
-    counts, widths = [], []
+    counts, widths, holdups = [], [], []
     for path in sorted(glob.glob(os.path.join(run, "fields_[0-9]*.h5"))):
         with h5py.File(path, "r") as f:
             if float(np.asarray(f["time"])[0]) < geometry["window"] - 1e-9:
                 continue
             gas_fraction = np.asarray(f["gas_fraction"]).ravel()
-        for a, dx in void_shape.depth_slices(gas_fraction, centres, SLICES):
+        for a, dx in void_shape.depth_slices(gas_fraction, centres, void_shape.DEPTH_SLICES):
             _, count, w = void_shape.snapshot_measure(a, dx)
             counts.append(count)
             widths += w
+            holdups.append(void_shape.holdup(a))
+    motion = mesoscale.run_measure(run, geometry["window"], math.inf, 3, slices=True)
     return {"u_mf": packed_branch_umf(velocity[ramp], column["bed_pressure_drop"][ramp], plateau),
             "dp_over_weight": plateau / column["bed_weight_per_area"][window].mean(),
             "expansion": height[window].mean() / height[0],
             "bubbles_per_slice": float(np.mean(counts)) if counts else math.nan,
-            "bubble_width_mm": 1000 * float(np.mean(widths)) if widths else math.nan}
+            "bubble_width_mm": 1000 * float(np.mean(widths)) if widths else math.nan,
+            "void_share": float(np.mean([h[0] for h in holdups])) if holdups else math.nan,
+            "emulsion_gas_fraction": float(np.nanmean([h[1] for h in holdups])) if holdups else math.nan,
+            "solids_motion_z_cm2s2": 1e4 * motion["solids_var_z"] if motion else math.nan}
 
 
 def relative_difference(coarse, fine):
@@ -194,7 +206,9 @@ def main():
     for r in rows:
         print(f"{r['quantity']:18s} {r['variant']:12s} {r['fine']:10.4g} {r['coarse']:10.4g} "
               f"{100 * r['difference']:+7.1f}% {100 * r['tolerance']:4.0f}%  {'yes' if r['pass'] else 'NO'}")
-    print(f"table written: {path}")
+    print(f"table written: {path}\n\n{'diagnostic':22s}" + "".join(f"{v:>12s}" for v in VARIANTS))
+    for name, what in DIAGNOSTICS.items():
+        print(f"{name:22s}" + "".join(f"{measured[v][name]:12.4g}" for v in VARIANTS) + f"   {what}")
     if args.require_pass and not all(r["pass"] for r in rows):
         sys.exit(1)
 

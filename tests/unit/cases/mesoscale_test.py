@@ -2,7 +2,8 @@
 """Unit test of cases/goldschmidt_segregation/mesoscale.py on synthetic fields of a 6 x 2 x 8 box mesh (1 cm
 cells, y the depth) whose bed fills rows 0-5 under a gas-only freeboard: halves of the bed moving apart give
 their variance about the centre of mass, cell-scale motion averages out in a box, the solids weight the depth
-average, the gas is taken superficial and only inside the bed, and the snapshots are picked by time."""
+average, slices of a deep bed keep the motion a depth average cancels, the gas is taken superficial and only
+inside the bed, and the snapshots are picked by time."""
 import os
 import subprocess
 import sys
@@ -64,6 +65,20 @@ class Snapshot(unittest.TestCase):
         var_x, _, com_x, _, _, _ = self.measure(bed(solids), s, g)
         self.assertAlmostEqual(com_x, 0.125, places=12)
         self.assertAlmostEqual(var_x, 0.125 ** 2, places=12)
+
+    def test_slices_keep_motion_that_the_depth_average_cancels(self):
+        # Front and back rows moving apart along x: the depth average sees a bed at rest, each slice (the mesh is
+        # 2 cells deep: the slice at 1/4 is the front row, those at 1/2 and 3/4 the back row) its row's motion.
+        front = CELLS[:, 1] == 0
+        s, g = velocities(solids_x=np.where(front, 0.3, -0.3))
+        self.assertAlmostEqual(self.measure(bed(), s, g)[0], 0.0, places=12)
+        var_x, _, com_x, _, _, _ = mesoscale.snapshot(bed(), g, s, CENTRES, 3, slices=True)
+        self.assertAlmostEqual(var_x, 0.0, places=12)  # each slice moves as a whole: no motion about its mass centre
+        self.assertAlmostEqual(com_x, (0.3 - 0.3 - 0.3) / 3, places=12)  # the slices' centre-of-mass velocities
+        left = CELLS[:, 0] < 3
+        s, g = velocities(solids_x=np.where(front, np.where(left, 0.2, -0.2), 0.0))
+        var_x = mesoscale.snapshot(bed(), g, s, CENTRES, 3, slices=True)[0]
+        self.assertAlmostEqual(var_x, 0.04 / 3, places=12)  # the front slice's 0.04, the back slices' 0
 
     def test_the_gas_is_superficial_and_taken_inside_the_bed_only(self):
         # gas fraction 0.5 in the bed: interstitial 2 and 6 m/s are superficial 1 and 3 (mean 2, variance 1); the

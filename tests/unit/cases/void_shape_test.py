@@ -39,6 +39,18 @@ class VoidShape(unittest.TestCase):
         self.assertEqual(count, 2)
         self.assertEqual(sorted(np.rint(np.array(widths) / DX).astype(int)), [7, 9])
 
+    def test_holdup_splits_the_bed_into_voids_and_emulsion(self):
+        a = bed()
+        a[5:7, :] = 0.9  # a layer of 2 x 47 cells
+        a[20:22, 10:12] = 0.95  # a bubble of 4 cells
+        a[25, 30] = 0.9  # a gap of one cell: emulsion
+        share, emulsion = void_shape.holdup(a)
+        self.assertAlmostEqual(share, (2 * NX + 4) / (30 * NX), places=12)
+        self.assertAlmostEqual(emulsion, (0.4 * (30 * NX - 2 * NX - 5) + 0.9) / (30 * NX - 2 * NX - 4), places=12)
+        share, emulsion = void_shape.holdup(bed())
+        self.assertEqual(share, 0.0)
+        self.assertAlmostEqual(emulsion, 0.4, places=12)
+
     def test_a_layer_across_the_width_is_a_layer_not_a_bubble(self):
         a = bed()
         a[12:14, 1:46] = 0.9  # 45 of 47 columns: more than 80 %

@@ -3,7 +3,8 @@
 20 mm bed of 800 beads, 0.3 s per variant, about 1.5 min on 1 core). The physics of so small a bed means
 nothing; the test checks that
   * the driver ran the fine bed and the three coarse variants and wrote the table with every row (3 variants
-    x 5 quantities), the fine bed's U_mf, dp/(W/A) and expansion numbers;
+    x 5 quantities), the fine bed's U_mf, dp/(W/A) and expansion numbers, and the diagnostics (void share,
+    emulsion gas fraction, the solids' motion) for every variant;
   * each coarse run had its parcels (np 8, np 27, 5 mm parcels of both classes) and the fine bed's solid mass
     to within one of its largest parcels;
   * the inlet ramped (the bed's case.yaml has the ramp) and the fine bed's pressure drop rose with it;
@@ -27,6 +28,7 @@ DRIVER = os.path.join(CASES, "coarse_graining", "fluidized", "validate.py")
 PARCELS = {"fine": (1, 1, 1.5, 2.5), "np8_linear": (8, 8, 3.0, 5.0), "np27_linear": (27, 27, 4.5, 7.5),
            "d5mm_linear": (37.04, 8, 5.0, 5.0)}  # np small, np large, D small, D large [mm]
 QUANTITIES = ("u_mf", "dp_over_weight", "expansion", "bubbles_per_slice", "bubble_width_mm")
+DIAGNOSTICS = ("void_share", "emulsion_gas_fraction", "solids_motion_z_cm2s2")
 
 
 def main():
@@ -41,10 +43,20 @@ def main():
         if "table written" not in stdout:
             fail("validate.py wrote no table")
         check_table(os.path.join(work, "coarse_graining_fluidized.csv"))
+        check_diagnostics(stdout)
         check_beds(os.path.join(work, "coarse_graining.csv"))
         check_ramp(work)
     expect_nothing_left(work, here_before)
     print("PASS")
+
+
+def check_diagnostics(stdout):
+    """Every diagnostic line printed with a finite value per variant."""
+    lines = {line.split()[0]: line.split()[1:] for line in stdout.splitlines() if line.strip()}
+    for name in DIAGNOSTICS:
+        values = [float(v) for v in lines.get(name, [])[:len(PARCELS)]]
+        if len(values) != len(PARCELS) or not all(math.isfinite(v) for v in values):
+            fail(f"diagnostic {name}: {lines.get(name)}, expected a finite value for each of {list(PARCELS)}")
 
 
 def check_table(path):
