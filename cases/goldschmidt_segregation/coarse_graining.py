@@ -24,6 +24,9 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
                the sliding losses of a collision grow about as mu, so this keeps the frictional share of the
                dissipation per unit mass as well (without friction np 8 stops bubbling: README.md); the
                walls keep their friction. It overrides a --set of liggghts.variables.bead_friction
+  mono_fine    2 mm beads of one size for both types (the mixture's bed mass), one per parcel: whether what
+               coarse graining does to the mixture needs a mixture
+  mono_np8_linear  8 of those beads per parcel: 4 mm parcels, scaling linear (l = 2)
 Every coarse bed has the fine bed's solid mass (to within a parcel), 50/50 by mass. Larger spheres fit less
 densely into the insertion region (fix insert/pack places them at random without overlap, and a 5 mm sphere
 leaves its centre 7.4 mm of the 12.4 mm wide slot), so the region is made taller until the solid volume over
@@ -96,7 +99,13 @@ KEEP_DISSIPATION = {"np8_linear_dissipation", "np8_linear_dissipation_friction"}
 # Variants whose parcel-parcel friction is l times the beads': the frictional share of the dissipation too.
 SCALE_FRICTION = {"np8_linear_dissipation_friction"}
 
-# name: (description, parcel diameters of types 1 and 2 [m], fix parcel mode, scaling)
+# Beads of one size for both types: the bed of one particle size, as heavy as the mixture's, that tells whether
+# what coarse graining does to the mixture needs a mixture.
+MONO_DIAMETER = 2e-3
+MONO_BEADS = (MONO_DIAMETER, MONO_DIAMETER)
+
+# name: (description, parcel diameters of types 1 and 2 [m], fix parcel mode, scaling[, bead diameters of types
+# 1 and 2, BEAD_DIAMETERS when not given])
 VARIANTS = {
     "fine": ("one bead per parcel (the case as shipped)", BEAD_DIAMETERS, "constant_np", "none"),
     "np3.375_linear": ("3.375 beads per parcel: 2.25 and 3.75 mm parcels (l = 1.5), scaling linear",
@@ -116,6 +125,10 @@ VARIANTS = {
                                tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np8_linear_dissipation_friction": ("np8_linear_dissipation with parcel-parcel friction l mu",
                                         tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "mono_fine": ("2 mm beads of one size for both types, one per parcel", MONO_BEADS, "constant_np", "none",
+                  MONO_BEADS),
+    "mono_np8_linear": ("8 of the 2 mm beads per parcel: 4 mm parcels, scaling linear",
+                        tuple(2 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
 }
 
 
@@ -147,14 +160,15 @@ class Plan:
     def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, depth, height, fill_top,
                  steps_per_contact=STEPS_PER_CONTACT):
         self.name = name
-        self.description, self.diameters, self.mode, self.scaling = VARIANTS[name]
+        self.description, self.diameters, self.mode, self.scaling, *beads = VARIANTS[name]
+        self.beads = beads[0] if beads else BEAD_DIAMETERS
         self.masses = [sphere_mass(d) for d in self.diameters]
-        self.np = [(D / d) ** 3 for D, d in zip(self.diameters, BEAD_DIAMETERS)]
+        self.np = [(D / d) ** 3 for D, d in zip(self.diameters, self.beads)]
         # 50/50 by mass: parcels per kg of bed are sum 0.5/M over the classes
         fine_mass = nbeads / sum(0.5 / sphere_mass(d) for d in BEAD_DIAMETERS)
         self.parcels = round(fine_mass * sum(0.5 / m for m in self.masses))
         # the kn of each type with itself in force, as parcelflow's contact-time check reads it
-        kn = [SPRING * (D / d if self.scaling == "linear" else 1.0) for D, d in zip(self.diameters, BEAD_DIAMETERS)]
+        kn = [SPRING * (D / d if self.scaling == "linear" else 1.0) for D, d in zip(self.diameters, self.beads)]
         self.contact_time = min(math.pi / math.sqrt(k / (m / 2)) for k, m in zip(kn, self.masses))
         steps = math.ceil(steps_per_contact * gas_step / self.contact_time - 1e-9)
         self.dem_step = gas_step / steps
@@ -179,7 +193,7 @@ class Plan:
         if self.mode == "constant_np":
             args = f"mode constant_np np {self.np[0]:.12g} scaling {self.scaling}"
         else:
-            dp = " ".join(f"{d:.12g}" for d in BEAD_DIAMETERS)
+            dp = " ".join(f"{d:.12g}" for d in self.beads)
             args = f"mode constant_diameter diameter {self.diameters[0]:.12g} dp_by_type {dp} none scaling {self.scaling}"
         # the free settling as long in seconds as the fine bed's, the filling as long per metre of region height
         stretch = fine_dem_step / self.dem_step
@@ -190,12 +204,14 @@ class Plan:
                      "fill_drag_large_factor": f"{self.masses[1] / self.masses[0]:.6g}",
                      "fill_top": f"{self.fill_top:.4f}", "settle_steps": str(round(settle_steps * fill_stretch)),
                      "free_steps": str(round(FREE_STEPS * stretch))}
+        if self.beads != BEAD_DIAMETERS:  # the script's damping is the mixture's beads'; these beads' own
+            variables["damping"] = damping_matrix([sphere_mass(d) for d in self.beads])
         if self.scaling == "none":  # parcel values: the beads' spring and restitution with the parcels' masses
             variables["damping"] = damping_matrix(self.masses)
-        l = self.diameters[0] / BEAD_DIAMETERS[0]  # D / d of the variants that keep the beads' losses
+        l = self.diameters[0] / self.beads[0]  # D / d of the variants that keep the beads' losses
         if self.name in KEEP_DISSIPATION:  # the beads' values for e'; scaling linear keeps e' for the parcels
             restitution = math.sqrt(1 - l * (1 - RESTITUTION ** 2))
-            variables["damping"] = damping_matrix([sphere_mass(d) for d in BEAD_DIAMETERS], restitution)
+            variables["damping"] = damping_matrix([sphere_mass(d) for d in self.beads], restitution)
         if self.name in SCALE_FRICTION:
             variables["bead_friction"] = f"{l * BEAD_FRICTION:.6g}"
         return variables

@@ -6,9 +6,9 @@ usage: mesoscale.py RUN [RUN ...] [--start 10] [--end T] [--box 3] [--slices]
 
 Each snapshot (fields_*.h5: gas_fraction, gas_velocity, solids_velocity per cell) is averaged over the depth
 onto the mesh's rows and columns (z, x) (with --slices, for a bed as deep as it is wide: taken on the slices at
-1/4, 1/2 and 3/4 of the depth, each measured alone and the measures averaged), the solids velocity weighted by the solids fraction and the gas
-velocity taken superficial (times the gas fraction), and then summed over boxes of BOX x BOX of those cells,
-counting only the cells inside the bed (void_shape.py's surface). Per snapshot:
+1/4, 1/2 and 3/4 of the depth, each measured alone and the measures averaged), the solids velocity weighted by
+the solids fraction and the gas velocity taken superficial (times the gas fraction), and then summed over boxes
+of BOX x BOX of those cells, counting only the cells inside the bed (void_shape.py's surface). Per snapshot:
 - solids: the variance of the boxes' solids velocity about the bed's centre-of-mass velocity, weighted by the
   boxes' solids (x and z), and that centre-of-mass velocity;
 - gas: the variance of the boxes' superficial gas velocity about its mean inside the bed, weighted by the

@@ -14,7 +14,7 @@ scaling, DEM step). The inlet velocity rises linearly from 0 to HOLD_VELOCITY ov
 A variant that finished before with the same settings is not run again (coarse_graining.py keeps it).
 
 usage: validate.py PARCELFLOW [--runs DIR] [--size smoke|full|periodic|deep] [--ranks N] [--jobs N] [--mpirun CMD]
-                   [--require-pass]
+                   [--require-pass] [--variants fine VARIANT ...]
 """
 import argparse
 import csv
@@ -163,11 +163,12 @@ def relative_difference(coarse, fine):
 
 
 def table_rows(measured):
-    fine = measured["fine"]
+    """Every variant's quantities against the first variant's (the fine bed)."""
+    reference, *others = measured
+    fine = measured[reference]
     rows = []
-    for variant, values in measured.items():
-        if variant == "fine":
-            continue
+    for variant in others:
+        values = measured[variant]
         for name, (tolerance, unit, _) in QUANTITIES.items():
             difference = relative_difference(values[name], fine[name])
             rows.append({"quantity": name, "unit": unit, "variant": variant, "fine": fine[name],
@@ -185,17 +186,22 @@ def main():
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--jobs", type=int, default=1, help="variants run at the same time (each on --ranks ranks)")
     p.add_argument("--require-pass", action="store_true", help="exit 1 unless every row passes")
+    p.add_argument("--variants", nargs="+", default=list(VARIANTS),
+                   help="coarse_graining.py's variants, the fine bed first (e.g. mono_fine mono_np8_linear: beads of "
+                        "one size)")
     args = p.parse_args()
+    if args.variants[0] not in ("fine", "mono_fine"):
+        sys.exit(f"--variants {' '.join(args.variants)}: the first must be a fine bed (fine or mono_fine)")
     runs = os.path.abspath(args.runs)
     os.makedirs(runs, exist_ok=True)
     geometry = SIZES[args.size]
     bed = make_bed(args.size, runs)
     command = [sys.executable, os.path.join(GOLDSCHMIDT, "coarse_graining.py"), os.path.abspath(args.parcelflow), runs,
                "--case", bed, "--end", str(geometry["end"]), "--start", str(geometry["window"]),
-               "--ranks", str(args.ranks), "--jobs", str(args.jobs), "--mpirun", args.mpirun, *VARIANTS]
+               "--ranks", str(args.ranks), "--jobs", str(args.jobs), "--mpirun", args.mpirun, *args.variants]
     if subprocess.run(command).returncode != 0:
         sys.exit("coarse_graining.py failed (its output is above)")
-    measured = {v: measure(os.path.join(runs, v, "run"), geometry) for v in VARIANTS}
+    measured = {v: measure(os.path.join(runs, v, "run"), geometry) for v in args.variants}
     rows = table_rows(measured)
     path = os.path.join(runs, "coarse_graining_fluidized.csv")
     with open(path, "w", newline="") as f:
@@ -206,9 +212,9 @@ def main():
     for r in rows:
         print(f"{r['quantity']:18s} {r['variant']:12s} {r['fine']:10.4g} {r['coarse']:10.4g} "
               f"{100 * r['difference']:+7.1f}% {100 * r['tolerance']:4.0f}%  {'yes' if r['pass'] else 'NO'}")
-    print(f"table written: {path}\n\n{'diagnostic':22s}" + "".join(f"{v:>12s}" for v in VARIANTS))
+    print(f"table written: {path}\n\n{'diagnostic':22s}" + "".join(f"{v:>16s}" for v in args.variants))
     for name, what in DIAGNOSTICS.items():
-        print(f"{name:22s}" + "".join(f"{measured[v][name]:12.4g}" for v in VARIANTS) + f"   {what}")
+        print(f"{name:22s}" + "".join(f"{measured[v][name]:16.4g}" for v in args.variants) + f"   {what}")
     if args.require_pass and not all(r["pass"] for r in rows):
         sys.exit(1)
 
