@@ -6,6 +6,7 @@ dp/(W/A) over the same window, the run times, and what each bed is made of (parc
 
 Variants (atom types 1 and 2 are the small and the large beads in all of them):
   fine         one bead per parcel: the case as shipped
+  np2_linear   2 beads per parcel (l = 2^(1/3) = 1.26): parcels of 1.89 and 3.15 mm
   np3.375_linear  3.375 beads per parcel (l = 1.5): parcels of 2.25 and 3.75 mm, between the beads and np 8
   np8_linear   8 beads per parcel (fix parcel mode constant_np np 8 scaling linear): parcels of 3 and 5 mm,
                1/8 of the parcels; the beads' contact values scaled by l = 2
@@ -26,7 +27,8 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
                walls keep their friction. It overrides a --set of liggghts.variables.bead_friction
   mono_fine    2 mm beads of one size for both types (the mixture's bed mass), one per parcel: whether what
                coarse graining does to the mixture needs a mixture
-  mono_np8_linear  8 of those beads per parcel: 4 mm parcels, scaling linear (l = 2)
+  mono_np3.375_linear, mono_np8_linear  3.375 and 8 of those beads per parcel: 3 and 4 mm parcels, scaling
+               linear (l = 1.5 and 2)
 Every coarse bed has the fine bed's solid mass (to within a parcel), 50/50 by mass. Larger spheres fit less
 densely into the insertion region (fix insert/pack places them at random without overlap, and a 5 mm sphere
 leaves its centre 7.4 mm of the 12.4 mm wide slot), so the region is made taller until the solid volume over
@@ -90,9 +92,10 @@ GRAVITY = 9.81
 COARSE_DIAMETER = 5e-3            # parcel diameter of the d5mm variants
 STEPS_PER_CONTACT = 11
 
-# Extra height of the insertion region: random placement without overlap fills it less densely with 2.5 mm
-# spheres alone than with the bead mixture (in the smoke test's third-width bed 3,830 of 3,990 fitted).
-INSERTION_ROOM = {"d2.5mm_linear": 1.15}
+# Extra height of the insertion region: random placement without overlap fills it less densely with spheres of
+# one size than with the bead mixture (2.5 mm: in the smoke test's third-width bed 3,830 of 3,990 fitted; 2 mm
+# beads: in the fluidized periodic box 7,543 of 7,806).
+INSERTION_ROOM = {"d2.5mm_linear": 1.15, "mono_fine": 1.15, "mono_np3.375_linear": 1.15}
 
 # Variants whose parcel-parcel restitution keeps the fine bed's collisional dissipation per unit mass.
 KEEP_DISSIPATION = {"np8_linear_dissipation", "np8_linear_dissipation_friction"}
@@ -108,6 +111,8 @@ MONO_BEADS = (MONO_DIAMETER, MONO_DIAMETER)
 # 1 and 2, BEAD_DIAMETERS when not given])
 VARIANTS = {
     "fine": ("one bead per parcel (the case as shipped)", BEAD_DIAMETERS, "constant_np", "none"),
+    "np2_linear": ("2 beads per parcel: 1.89 and 3.15 mm parcels (l = 1.26), scaling linear",
+                   tuple(2 ** (1 / 3) * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np3.375_linear": ("3.375 beads per parcel: 2.25 and 3.75 mm parcels (l = 1.5), scaling linear",
                        tuple(1.5 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np8_linear": ("8 beads per parcel: 3 and 5 mm parcels, scaling linear",
@@ -127,6 +132,8 @@ VARIANTS = {
                                         tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "mono_fine": ("2 mm beads of one size for both types, one per parcel", MONO_BEADS, "constant_np", "none",
                   MONO_BEADS),
+    "mono_np3.375_linear": ("3.375 of the 2 mm beads per parcel: 3 mm parcels, scaling linear",
+                            tuple(1.5 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
     "mono_np8_linear": ("8 of the 2 mm beads per parcel: 4 mm parcels, scaling linear",
                         tuple(2 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
 }
@@ -442,8 +449,13 @@ def main():
     table = [summarize(plan, args) for plan in plans if plan.name not in failed]
     if not table:
         sys.exit("no finished run to tabulate")
-    fine = next((r for r in table if r["variant"] == "fine"), None)
-    for r in table:  # solid mass against the fine bed's, in parcels of the variant's largest parcel
+    for r in table:
+        log = os.path.join(args.root, r["variant"], "run", "log.liggghts")
+        if os.path.exists(log) and "Less insertions than requested" in open(log, errors="replace").read():
+            print(f"warning: {r['variant']}: LIGGGHTS inserted fewer parcels than requested ({log}): its bed is "
+                  "lighter than the others (mass_vs_fine_parcels)", flush=True)
+    fine = next((r for r in table if r["variant"] in ("fine", "mono_fine")), None)
+    for r in table:  # solid mass against the (first) fine bed's, in parcels of the variant's largest parcel
         r["mass_vs_fine_parcels"] = ((r["bed_mass_kg"] - fine["bed_mass_kg"]) / r["largest_parcel_kg"]
                                      if fine else math.nan)
     path = os.path.join(args.root, "coarse_graining.csv")

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "parcel_size_report.h"
 
@@ -11,6 +13,15 @@ namespace pc = parcelflow::coupling;
 namespace {
 
 bool mentions(const std::string& line, const std::string& what) { return line.find(what) != std::string::npos; }
+
+// The report without its last line, the bubbling warning that every coarse-grained bed gets (checked here).
+std::vector<std::string> withoutBubbling(std::vector<std::string> lines) {
+  EXPECT_FALSE(lines.empty());
+  if (lines.empty()) return lines;
+  EXPECT_TRUE(mentions(lines.back(), "bubble less than their particles")) << lines.back();
+  lines.pop_back();
+  return lines;
+}
 
 // The Goldschmidt bed's mesh: h = 4.15 mm, 15 mm deep.
 const pc::KernelReach kGoldschmidt{0.00415, 0.0, 0.015};
@@ -23,7 +34,7 @@ TEST(ParcelSizeReport, SilentForSingleParticles) {
 
 TEST(ParcelSizeReport, WarnsForParcelsWiderThanTheKernelAndTooFewAcross) {
   // 5 mm parcels: D/h = 1.2 > 1 with parcel_scale 0, and 3 across the 15 mm depth < 6
-  const auto lines = pc::parcelSizeReport({0.005, 37.04}, kGoldschmidt);
+  const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 37.04}, kGoldschmidt));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_TRUE(mentions(lines[0], "D = 5 mm")) << lines[0];
   EXPECT_TRUE(mentions(lines[1], "1.2 times the kernel length")) << lines[1];
@@ -36,27 +47,27 @@ TEST(ParcelSizeReport, AWidenedKernelAndAWideBedAreWithinTheLimits) {
   pc::KernelReach widened = kGoldschmidt;
   widened.parcel_scale = 2.0;
   widened.narrowest_extent = 0.03;  // 6 parcels across
-  const auto lines = pc::parcelSizeReport({0.005, 8.0}, widened);
+  const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0}, widened));
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_TRUE(mentions(lines[0], "spread over parcel_scale D = 10 mm")) << lines[0];
   // smoothed over at least D/2 instead: no kernel warning, and the description says so
   pc::KernelReach smoothed = widened;
   smoothed.parcel_scale = 0.0;
   smoothed.smoothing_length = 0.0025;
-  const auto smooth_lines = pc::parcelSizeReport({0.005, 8.0}, smoothed);
+  const auto smooth_lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0}, smoothed));
   ASSERT_EQ(smooth_lines.size(), 1u);
   EXPECT_TRUE(mentions(smooth_lines[0], "smoothed over 2.5 mm")) << smooth_lines[0];
   smoothed.smoothing_length = 0.002;  // less than D/2: the warning stays
-  EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0}, smoothed).size(), 2u);
+  EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.005, 8.0}, smoothed)).size(), 2u);
   // spilling the excess solids instead: no kernel warning either, and the description says so
   pc::KernelReach spilled = widened;
   spilled.parcel_scale = 0.0;
   spilled.spills_excess = true;
-  const auto spill_lines = pc::parcelSizeReport({0.005, 8.0}, spilled);
+  const auto spill_lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0}, spilled));
   ASSERT_EQ(spill_lines.size(), 1u);
   EXPECT_TRUE(mentions(spill_lines[0], "moved to the neighbours")) << spill_lines[0];
   // np 8 parcels of 3 mm (the np8 bed's small class alone): D/h = 0.72, 5 across: only the second limit
-  EXPECT_EQ(pc::parcelSizeReport({0.003, 8.0}, kGoldschmidt).size(), 2u);
+  EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.003, 8.0}, kGoldschmidt)).size(), 2u);
 }
 
 TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
@@ -65,7 +76,7 @@ TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
   bed.spills_excess = true;
   bed.side_wall_area_per_volume = 4.0 / 0.075;
   // np 8: 5 mm parcels of 2.5 mm beads, share 4 x 2.5 / 75 = 0.133
-  const auto lines = pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed);
+  const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed));
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_TRUE(mentions(lines[0], "wall layer share (D - d) x side-wall area / gas volume = 0.133")) << lines[0];
   EXPECT_TRUE(mentions(lines[1], "share 0.133 of the bed (limit 0.05)")) << lines[1];
@@ -73,15 +84,15 @@ TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
   // the same parcels in a 0.3 m bed: share 0.033, only the description
   bed.side_wall_area_per_volume = 4.0 / 0.3;
   bed.narrowest_extent = 0.3;
-  EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed).size(), 1u);
+  EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed)).size(), 1u);
   // periodic sides (no side wall counted): no share in the description
   bed.side_wall_area_per_volume = 0.0;
-  const auto periodic = pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed);
+  const auto periodic = withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed));
   ASSERT_EQ(periodic.size(), 1u);
   EXPECT_FALSE(mentions(periodic[0], "wall layer")) << periodic[0];
   // every axis periodic (no walls to count parcels between): neither a count across nor its warning
   bed.narrowest_extent = std::numeric_limits<double>::infinity();
-  const auto unbounded = pc::parcelSizeReport({0.05, 8.0, 0.025}, bed);
+  const auto unbounded = withoutBubbling(pc::parcelSizeReport({0.05, 8.0, 0.025}, bed));
   ASSERT_EQ(unbounded.size(), 1u);
   EXPECT_FALSE(mentions(unbounded[0], "across")) << unbounded[0];
 }
@@ -91,20 +102,34 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   pc::KernelReach periodic = kGoldschmidt;
   periodic.parcel_scale = 2.0;
   periodic.narrowest_extent = 0.15;
-  const auto lines = pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic);
+  const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic));
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_TRUE(mentions(lines[1], "particles of 1.5 to 2.5 mm (a size mixture) at up to l = D / dp = 2 (limit 1.5)"))
       << lines[1];
   EXPECT_TRUE(mentions(lines[1], "use parcels of at most l = 1.5")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "coupling.class_collisions, off in this run, adds")) << lines[1];
   periodic.class_collisions = true;
-  EXPECT_TRUE(mentions(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic)[1],
+  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic))[1],
                        "coupling.class_collisions (on) restores"));
   periodic.class_collisions = false;
   // np 3.375 (l = 1.5), which remixed as the beads do: within the limit
-  EXPECT_EQ(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic).size(), 1u);
+  EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic)).size(), 1u);
   // one particle size in parcels: no mixture warning
-  EXPECT_EQ(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0025, 0.0025}, periodic).size(), 1u);
+  EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0025, 0.0025}, periodic)).size(), 1u);
   // a mixture of single particles: no report at all
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0015, 0.0025}, periodic).empty());
+}
+
+TEST(ParcelSizeReport, TellsEveryCoarseGrainedBedThatItBubblesLess) {
+  // np 2 (l = 1.26), the smallest l measured, which expanded 9 % less than its beads: warned, naming l
+  pc::KernelReach periodic = kGoldschmidt;
+  periodic.narrowest_extent = std::numeric_limits<double>::infinity();
+  periodic.spills_excess = true;
+  const auto lines = pc::parcelSizeReport({0.00315, 2.0, 0.00065, 0.0025, 0.0025}, periodic);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_TRUE(mentions(lines[1], "parcels of up to l = D / dp = 1.26 bubble less than their particles")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "expanded 8-18 % less")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "check against a fine run")) << lines[1];
+  // single particles: no report, so no warning
+  EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0025, 0.0025}, periodic).empty());
 }
