@@ -45,7 +45,7 @@ SPARGER_Z = 0.34                # the reduced case's sparger layer [m]
 EXPERIMENT_SURFACE = 3.5        # above the sparger [m]
 ZONES = ((0.4, 1.5), (1.5, 2.5), (2.5, 3.5), (3.5, 4.5))
 AVERAGE_FROM = 20.0
-RECORD = os.path.join(HERE, "resolution")  # the runs' rows and profiles, kept with the case (runs outlive no machine)
+RECORD = os.path.join(HERE, "resolution")  # the runs' rows and profiles, kept with the case: machines do not keep runs
 
 
 def filtered(case):
@@ -278,7 +278,7 @@ def main():
     p.add_argument("--end", type=float, default=30.0)
     p.add_argument("--summary", action="store_true")
     p.add_argument("--record", action="store_true",
-                   help="with --summary: keep the finished runs' rows and profiles in the case's resolution/ folder")
+                   help="keep the finished runs' rows and profiles in the case's resolution/ folder")
     args = p.parse_intermixed_args()
     args.runs = os.path.abspath(args.runs)
     args.parcelflow = os.path.abspath(args.parcelflow)
