@@ -25,6 +25,8 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
                the sliding losses of a collision grow about as mu, so this keeps the frictional share of the
                dissipation per unit mass as well (without friction np 8 stops bubbling: README.md); the
                walls keep their friction. It overrides a --set of liggghts.variables.bead_friction
+  np8_linear_dissipation_l2  np8_linear with 1 - e'^2 = l^2 (1 - e^2) (0.97 -> 0.874): the collisional stress
+               at one shear rate the beads' (dense kinetic theory: the stress goes as d^2 (shear rate)^2 / (1 - e^2))
   mono_fine    2 mm beads of one size for both types (the mixture's bed mass), one per parcel: whether what
                coarse graining does to the mixture needs a mixture
   mono_np3.375_linear, mono_np8_linear  3.375 and 8 of those beads per parcel: 3 and 4 mm parcels, scaling
@@ -97,8 +99,10 @@ STEPS_PER_CONTACT = 11
 # beads: in the fluidized periodic box 7,543 of 7,806).
 INSERTION_ROOM = {"d2.5mm_linear": 1.15, "mono_fine": 1.15, "mono_np3.375_linear": 1.15}
 
-# Variants whose parcel-parcel restitution keeps the fine bed's collisional dissipation per unit mass.
-KEEP_DISSIPATION = {"np8_linear_dissipation", "np8_linear_dissipation_friction"}
+# Variants whose parcel-parcel restitution is lowered to 1 - e'^2 = l^k (1 - e^2), by k: k = 1 keeps the fine bed's
+# collisional dissipation per unit mass; k = 2 its collisional stress at one shear rate (kinetic theory's dense
+# limit: the granular temperature, and with it the stress, goes as d^2 (shear rate)^2 / (1 - e^2)).
+KEEP_DISSIPATION = {"np8_linear_dissipation": 1, "np8_linear_dissipation_friction": 1, "np8_linear_dissipation_l2": 2}
 # Variants whose parcel-parcel friction is l times the beads': the frictional share of the dissipation too.
 SCALE_FRICTION = {"np8_linear_dissipation_friction"}
 
@@ -130,6 +134,8 @@ VARIANTS = {
                                tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np8_linear_dissipation_friction": ("np8_linear_dissipation with parcel-parcel friction l mu",
                                         tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "np8_linear_dissipation_l2": ("np8_linear with parcel-parcel restitution 1 - e'^2 = l^2 (1 - e^2)",
+                                  tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "mono_fine": ("2 mm beads of one size for both types, one per parcel", MONO_BEADS, "constant_np", "none",
                   MONO_BEADS),
     "mono_np3.375_linear": ("3.375 of the 2 mm beads per parcel: 3 mm parcels, scaling linear",
@@ -217,7 +223,7 @@ class Plan:
             variables["damping"] = damping_matrix(self.masses)
         l = self.diameters[0] / self.beads[0]  # D / d of the variants that keep the beads' losses
         if self.name in KEEP_DISSIPATION:  # the beads' values for e'; scaling linear keeps e' for the parcels
-            restitution = math.sqrt(1 - l * (1 - RESTITUTION ** 2))
+            restitution = math.sqrt(1 - l ** KEEP_DISSIPATION[self.name] * (1 - RESTITUTION ** 2))
             variables["damping"] = damping_matrix([sphere_mass(d) for d in self.beads], restitution)
         if self.name in SCALE_FRICTION:
             variables["bead_friction"] = f"{l * BEAD_FRICTION:.6g}"
