@@ -145,6 +145,9 @@ VARIANTS = {
 }
 
 
+# The beds of single beads, which the others are compared with.
+FINE_VARIANTS = ("fine", "mono_fine")
+
 # What runs without variant names: the fine bed and the coarse beds compared with it in the README.
 DEFAULT_VARIANTS = ("fine", "np8_linear", "d5mm_none", "d5mm_linear", "d2.5mm_linear")
 
@@ -460,7 +463,7 @@ def main():
         if os.path.exists(log) and "Less insertions than requested" in open(log, errors="replace").read():
             print(f"warning: {r['variant']}: LIGGGHTS inserted fewer parcels than requested ({log}): its bed is "
                   "lighter than the others (mass_vs_fine_parcels)", flush=True)
-    fine = next((r for r in table if r["variant"] in ("fine", "mono_fine")), None)
+    fine = next((r for r in table if r["variant"] in FINE_VARIANTS), None)
     for r in table:  # solid mass against the (first) fine bed's, in parcels of the variant's largest parcel
         r["mass_vs_fine_parcels"] = ((r["bed_mass_kg"] - fine["bed_mass_kg"]) / r["largest_parcel_kg"]
                                      if fine else math.nan)

@@ -26,16 +26,22 @@ MIN_CELLS = 4
 DEPTH_SLICES = (0.25, 0.5, 0.75)  # where a bed as deep as it is wide is sliced (fractions of its depth)
 
 
+def cell_indices(centres):
+    """([i, j, k] cell indices of the cells at centres along x, y, z of a box mesh, the cell width dx along x
+    (1 for a single column))."""
+    index, spacing = [], []
+    for d in range(3):
+        values = np.unique(np.round(centres[:, d], 9))
+        spacing.append(np.diff(values)[0] if len(values) > 1 else 1.0)
+        index.append(np.rint((centres[:, d] - values[0]) / spacing[d]).astype(int))
+    return index, spacing[0]
+
+
 def depth_averaged(gas_fraction, centres):
     """Reshape a field given per cell (gas_fraction[i] at centres[i] = (x, y, z)) to a[z, x], averaged over
     the cells across the depth y; fields stacked along further axes (gas_fraction[i, k]) give a[z, x, k].
     Returns (a, dx)."""
-    spacing, index = [], []
-    for d in range(3):
-        values = np.unique(np.round(centres[:, d], 9))
-        step = np.diff(values)[0] if len(values) > 1 else 1.0
-        spacing.append(step)
-        index.append(np.rint((centres[:, d] - values[0]) / step).astype(int))
+    index, dx = cell_indices(centres)
     nx, nz = index[0].max() + 1, index[2].max() + 1
     total = np.zeros((nz, nx) + np.shape(gas_fraction)[1:])
     count = np.zeros((nz, nx))
@@ -43,20 +49,15 @@ def depth_averaged(gas_fraction, centres):
     np.add.at(count, (index[2], index[0]), 1)
     if (count == 0).any():
         raise ValueError("the field does not cover every (x, z) column of a box mesh")
-    return total / count.reshape(count.shape + (1,) * (total.ndim - 2)), spacing[0]
+    return total / count.reshape(count.shape + (1,) * (total.ndim - 2)), dx
 
 
 def depth_slices(gas_fraction, centres, fractions):
     """The field on the rows of cells nearest to each of the depths y = fraction x (bed depth) of a 3D bed,
     as [(a[z, x], dx), ...] (void_shape measures a quasi-2D bed's depth average; a bed as deep as it is wide
     is measured on slices instead); fields stacked along further axes (gas_fraction[i, k]) give a[z, x, k]."""
-    index, values = [], []
-    for d in range(3):
-        values.append(np.unique(np.round(centres[:, d], 9)))
-        step = np.diff(values[d])[0] if len(values[d]) > 1 else 1.0
-        index.append(np.rint((centres[:, d] - values[d][0]) / step).astype(int))
+    index, dx = cell_indices(centres)
     nx, ny, nz = (i.max() + 1 for i in index)
-    dx = np.diff(values[0])[0] if nx > 1 else 1.0
     out = []
     for fraction in fractions:
         j = min(ny - 1, int(fraction * ny))

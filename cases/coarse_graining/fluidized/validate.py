@@ -32,6 +32,7 @@ import yaml
 HERE = os.path.dirname(os.path.abspath(__file__))
 GOLDSCHMIDT = os.path.normpath(os.path.join(HERE, "..", "..", "goldschmidt_segregation"))
 sys.path.insert(0, GOLDSCHMIDT)
+from coarse_graining import FINE_VARIANTS  # noqa: E402
 import mesoscale  # noqa: E402
 import void_shape  # noqa: E402
 
@@ -133,18 +134,19 @@ def measure(run, geometry):
     ramp = t <= geometry["ramp_time"] + 1e-9
     with h5py.File(os.path.join(run, "fields_mesh.h5"), "r") as f:
         centres = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)
-    counts, widths, holdups = [], [], []
+    counts, widths, holdups, motion = [], [], [], []
     for path in sorted(glob.glob(os.path.join(run, "fields_[0-9]*.h5"))):
         with h5py.File(path, "r") as f:
             if float(np.asarray(f["time"])[0]) < geometry["window"] - 1e-9:
                 continue
-            gas_fraction = np.asarray(f["gas_fraction"]).ravel()
-        for a, dx in void_shape.depth_slices(gas_fraction, centres, void_shape.DEPTH_SLICES):
+            gas_fraction, gas_velocity, solids_velocity = (np.asarray(f[k]) for k in
+                                                           ("gas_fraction", "gas_velocity", "solids_velocity"))
+        for a, dx in void_shape.depth_slices(gas_fraction.ravel(), centres, void_shape.DEPTH_SLICES):
             _, count, w = void_shape.snapshot_measure(a, dx)
             counts.append(count)
             widths += w
             holdups.append(void_shape.holdup(a))
-    motion = mesoscale.run_measure(run, geometry["window"], math.inf, 3, slices=True)
+        motion.append(mesoscale.snapshot(gas_fraction, gas_velocity, solids_velocity, centres, 3, slices=True)[1])
     return {"u_mf": packed_branch_umf(velocity[ramp], column["bed_pressure_drop"][ramp], plateau),
             "dp_over_weight": plateau / column["bed_weight_per_area"][window].mean(),
             "expansion": height[window].mean() / height[0],
@@ -152,7 +154,7 @@ def measure(run, geometry):
             "bubble_width_mm": 1000 * float(np.mean(widths)) if widths else math.nan,
             "void_share": float(np.mean([h[0] for h in holdups])) if holdups else math.nan,
             "emulsion_gas_fraction": float(np.nanmean([h[1] for h in holdups])) if holdups else math.nan,
-            "solids_motion_z_cm2s2": 1e4 * motion["solids_var_z"] if motion else math.nan}
+            "solids_motion_z_cm2s2": 1e4 * float(np.mean(motion)) if motion else math.nan}
 
 
 def relative_difference(coarse, fine):
@@ -190,8 +192,8 @@ def main():
                    help="coarse_graining.py's variants, the fine bed first (e.g. mono_fine mono_np8_linear: beads of "
                         "one size)")
     args = p.parse_args()
-    if args.variants[0] not in ("fine", "mono_fine"):
-        sys.exit(f"--variants {' '.join(args.variants)}: the first must be a fine bed (fine or mono_fine)")
+    if args.variants[0] not in FINE_VARIANTS:
+        sys.exit(f"--variants {' '.join(args.variants)}: the first must be a fine bed ({' or '.join(FINE_VARIANTS)})")
     runs = os.path.abspath(args.runs)
     os.makedirs(runs, exist_ok=True)
     geometry = SIZES[args.size]

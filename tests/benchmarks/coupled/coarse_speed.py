@@ -59,7 +59,8 @@ def continue_run(args, launch, work, case, checkpoint, criterion):
         yaml.safe_dump(settings, f, sort_keys=False)
     out = os.path.join(work, "out")
     shutil.copytree(os.path.join(checkpoint, "..", ".."), out, ignore=shutil.ignore_patterns("checkpoints"))
-    start = float(yaml.safe_load(open(os.path.join(checkpoint, "loop.yaml")))["loop"]["time"])
+    with open(os.path.join(checkpoint, "loop.yaml")) as f:
+        start = float(yaml.safe_load(f)["loop"]["time"])
     stdout = run(launch + [args.parcelflow, "run", edited, "--output", out, "--end", repr(start + args.span),
                            "--restart", checkpoint], work)
     wall, split = loop_timing(stdout)
