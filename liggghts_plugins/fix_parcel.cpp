@@ -10,6 +10,7 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_support.h"
+#include "geometric_limits.h"
 #include "group.h"
 #include "modify.h"
 #include "parcel_math.h"
@@ -158,6 +159,7 @@ void FixParcel::setup(int)
     printed_ = true;
     print_contact_values();
   }
+  if (!limits_checked_) warn_geometric_limits();
 }
 
 void FixParcel::pre_force(int) { resolve_pending(); }
@@ -269,6 +271,22 @@ void FixParcel::check_one_density()
                   "type (or scaling none)", id, lowest, highest);
     fail(msg);
   }
+}
+
+// Once, at the first setup with parcels in the group (atoms inserted during a run are seen at the next).
+void FixParcel::warn_geometric_limits()
+{
+  double largest[3] = {0.0, 0.0, 0.0};  // D, l = D/dp, whether the group holds an atom
+  for (int i = 0; i < atom->nlocal; ++i)
+    if ((atom->mask[i] & groupbit) && data_[i][NP] > 0.0) {
+      largest[0] = std::max(largest[0], 2.0 * atom->radius[i]);
+      largest[1] = std::max(largest[1], 2.0 * atom->radius[i] / data_[i][DP]);
+      largest[2] = 1.0;
+    }
+  MPI_Allreduce(MPI_IN_PLACE, largest, 3, MPI_DOUBLE, MPI_MAX, world);
+  limits_checked_ = largest[2] > 0.0;
+  const std::string text = geometric_limits_warning(id, largest[0], largest[1]);
+  if (!text.empty() && comm->me == 0) error->warning(FLERR, text.c_str());
 }
 
 void FixParcel::print_contact_values()

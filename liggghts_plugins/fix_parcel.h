@@ -50,6 +50,7 @@ class FixParcel : public PerAtomColumnsFix {
   void apply_scaling();
   void check_one_density();
   void print_contact_values();
+  void warn_geometric_limits();
   [[noreturn]] void fail(const std::string& msg);
 
   ParcelSettings settings_;
@@ -58,6 +59,7 @@ class FixParcel : public PerAtomColumnsFix {
   bool needs_sequence_ = false;    // constant_diameter with more than one size class
   ContactScaling scaling_;
   bool printed_ = false;
+  bool limits_checked_ = false;  // at the first setup with atoms in the group
 };
 
 }  // namespace parcelflow::plugins

@@ -5,7 +5,8 @@ nothing; the test checks that
   * the driver ran every pair and wrote the table with every row: 4 coarse variants x (2 silo slots x 2
     discharge rows + 2 Beverloo-fit rows + 3 column rows) = 36 rows, each measured fine quantity a number;
   * each fine run was the stock liggghts binary without any parcelflow style, each coarse run was
-    `parcelflow dem` with `fix parcel` in the variant's mode (np, scaling, and for linear l = np^(1/3));
+    `parcelflow dem` with `fix parcel` in the variant's mode (np, scaling, and for linear l = np^(1/3)),
+    warned at its start of the openings and walls its parcels are too large for (geometric_limits.h);
   * every coarse run holds the fine run's solid mass to within one of its parcels (equal total mass);
   * the rows a scaling does not claim say "not claimed", the others the 5 % tolerance;
   * the temporary folder is removed and nothing is left in the working folder.
@@ -29,7 +30,8 @@ VARIANTS = {"np8_none": (8, "none"), "np8_linear": (8, "linear"), "np27_none": (
 RUN_CASES = ("silo_narrow", "silo_wide", "column")
 ROWS_PER_VARIANT = {"silo_narrow": 2, "silo_wide": 2, "silo": 2, "column": 3}
 SPHERES_LINE = re.compile(r"^(silo|column): (\d+) spheres, ([0-9.eE+-]+) kg of solids settled", re.M)
-LARGEST_PARTICLE_MASS = 2500 * math.pi / 6 * 0.0022 ** 3  # 1.1 dp at dp = 2 mm
+LARGEST_DIAMETER = 0.0022  # 1.1 dp at dp = 2 mm
+LARGEST_PARTICLE_MASS = 2500 * math.pi / 6 * LARGEST_DIAMETER ** 3
 
 
 def main():
@@ -87,6 +89,10 @@ def check_runs(work, case, parcelflow, liggghts):
             expected = "fix parcels parcel: mode constant_np, scaling none:"
         if expected not in screen:
             fail(f"{case}/{variant}: fix parcel did not report '{expected}'")
+        largest = round(LARGEST_DIAMETER * round(n_particles ** (1 / 3)), 6)
+        warning = f"fix parcels parcel: parcels up to D = {largest:.4g} m (l = D/dp up to {round(n_particles ** (1 / 3))})"
+        if f"WARNING: {warning}" not in screen or "narrower than 57 D" not in screen:
+            fail(f"{case}/{variant}: no start-up warning '{warning} ...' of the geometric limits")
         mass = settled_mass(screen, case, variant)
         parcel_mass = n_particles * LARGEST_PARTICLE_MASS
         print(f"[measured] {case}/{variant}: settled mass {mass:.6g} kg against the fine {fine_mass:.6g} kg "
