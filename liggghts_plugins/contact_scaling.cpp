@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "fix_mesh_surface.h"
 #include "fix_property_global.h"
 #include "fix_wall_gran.h"
 #include "force.h"
@@ -31,7 +32,8 @@ double factor_of(const std::string& name, double l)
 
 }  // namespace
 
-std::string ContactScaling::apply(LAMMPS* lmp, const PairScaleFactor& l, int ntypes, const char* caller)
+std::string ContactScaling::apply(LAMMPS* lmp, const PairScaleFactor& l, const PairScaleFactor& damping, int ntypes,
+                                  const char* caller)
 {
   undo(lmp);
   for (const std::string name : {"kn", "kt", "gamman", "gammat", "gamman_abs", "gammat_abs"}) {
@@ -51,7 +53,9 @@ std::string ContactScaling::apply(LAMMPS* lmp, const PairScaleFactor& l, int nty
     sp.fix = pg;
     double* values = const_cast<double*>(pg->get_values());  // the fix owns a plain malloc'd array
     for (int v = 0; v < rows * cols; ++v) {
-      sp.factors.push_back(factor_of(name, l(v / cols + 1, v % cols + 1)));
+      const int type_i = v / cols + 1, type_j = v % cols + 1;
+      const bool is_damping = name.compare(0, 5, "gamma") == 0;
+      sp.factors.push_back(factor_of(name, l(type_i, type_j)) * (is_damping ? damping(type_i, type_j) : 1.0));
       sp.original.push_back(values[v]);
       values[v] *= sp.factors.back();
       sp.scaled.push_back(values[v]);
@@ -135,6 +139,17 @@ std::string ContactScaling::check_contact_models(LAMMPS* lmp)
     if (auto* wall = dynamic_cast<FixWallGran*>(lmp->modify->fix[k]))
       if (std::string msg = check(wall, std::string("fix ") + wall->id); !msg.empty()) return msg;
   return "";
+}
+
+std::set<int> ContactScaling::wall_types(LAMMPS* lmp)
+{
+  std::set<int> types;
+  for (int k = 0; k < lmp->modify->nfix; ++k) {
+    if (auto* mesh = dynamic_cast<FixMeshSurface*>(lmp->modify->fix[k])) types.insert(mesh->atomTypeWall());
+    auto* wall = dynamic_cast<FixWallGran*>(lmp->modify->fix[k]);
+    if (wall && !wall->is_mesh_wall()) types.insert(wall->atom_type_wall());
+  }
+  return types;
 }
 
 }  // namespace parcelflow::plugins

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,11 @@ class ContactScaling {
   using PairScaleFactor = std::function<double(int, int)>;
 
   // Multiplies every coefficient present, per type pair, by its factor for that pair's l (kn, kt: l;
-  // gamman, gammat: 1/l; gamman_abs, gammat_abs: l^2). `ntypes` > 0: l is defined for types 1..ntypes only,
-  // and every coefficient must be an ntypes x ntypes matrix; 0: l is defined for any type. Returns "" on
-  // success, else a message; then nothing stays scaled.
-  std::string apply(LAMMPS_NS::LAMMPS* lmp, const PairScaleFactor& l, int ntypes, const char* caller);
+  // gamman, gammat: 1/l; gamman_abs, gammat_abs: l^2), the dampings also by damping(type_i, type_j).
+  // `ntypes` > 0: l is defined for types 1..ntypes only, and every coefficient must be an ntypes x ntypes
+  // matrix; 0: l is defined for any type. Returns "" on success, else a message; then nothing stays scaled.
+  std::string apply(LAMMPS_NS::LAMMPS* lmp, const PairScaleFactor& l, const PairScaleFactor& damping, int ntypes,
+                    const char* caller);
   // Restores the original values of the fixes that still hold the scaled ones.
   void undo(LAMMPS_NS::LAMMPS* lmp);
   // "" if every scaled fix still exists with the scaled values, else a message naming it.
@@ -38,6 +40,8 @@ class ContactScaling {
   // "" if pair_style gran and every fix wall/gran use model hooke/stiffness without cohesion and rolling
   // friction (what linear scaling can scale), else a message.
   static std::string check_contact_models(LAMMPS_NS::LAMMPS* lmp);
+  // The atom types of the walls defined so far: of every fix mesh/surface and of every primitive fix wall/gran.
+  static std::set<int> wall_types(LAMMPS_NS::LAMMPS* lmp);
 
  private:
   struct ScaledProperty {

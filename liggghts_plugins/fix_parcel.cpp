@@ -78,6 +78,12 @@ void FixParcel::assign(int i)
     d[NP] = 1.0;
     return;
   }
+  if (settings_.shear_stress_restitution > 0.0 && walls_.count(atom->type[i])) {
+    const std::string msg = "fix " + std::string(id) + " parcel: keyword 'shear_stress' keeps the walls' contacts, "
+                            "but a parcel has the walls' atom type " + std::to_string(atom->type[i]) +
+                            ", so its contacts were kept too; allowed: walls of an atom type that no parcel has";
+    error->one(FLERR, msg.c_str());
+  }
   if (settings_.mode == ParcelMode::ConstantNp) {
     d[NP] = settings_.np;
     d[DP] = particle_diameter(diameter, settings_.np);
@@ -235,10 +241,25 @@ void FixParcel::apply_scaling()
            "fix parcel may use scaling linear");
   }
   const ParcelSettings& s = settings_;
-  const std::string msg = scaling_.apply(
-      lmp, [&s](int type_i, int type_j) { return s.pair_scale_factor(type_i, type_j); },
-      s.by_type() ? static_cast<int>(s.type_diameters.size()) : 0, style);
+  walls_ = ContactScaling::wall_types(lmp);
+  const auto l = [&s](int type_i, int type_j) { return s.pair_scale_factor(type_i, type_j); };
+  const std::string msg = scaling_.apply(lmp, l, [this](int i, int j) { return shear_stress_damping(i, j); },
+                                         s.by_type() ? static_cast<int>(s.type_diameters.size()) : 0, style);
   if (!msg.empty()) fail(msg);
+}
+
+// The factor on the linearly scaled dampings of a type pair for keyword shear_stress: the ratio of the damping
+// ratios of e' and e (mass-specific or absolute alike); 1 for a wall or a type without parcels, and without it.
+double FixParcel::shear_stress_damping(int type_i, int type_j) const
+{
+  const ParcelSettings& s = settings_;
+  const double e = s.shear_stress_restitution;
+  const auto parcels = [&](int t) {
+    return !walls_.count(t) && !(s.by_type() && s.type_diameters.at(t - 1) == kNoParcels);
+  };
+  if (e == 0.0 || !parcels(type_i) || !parcels(type_j)) return 1.0;
+  const double e_parcels = shear_stress_restitution(e, s.pair_scale_factor(type_i, type_j));
+  return damping_ratio_of_restitution(e_parcels) / damping_ratio_of_restitution(e);
 }
 
 void FixParcel::init()
@@ -248,6 +269,18 @@ void FixParcel::init()
   if (msg.empty()) msg = ContactScaling::check_contact_models(lmp);
   if (!msg.empty()) fail(msg);
   if (settings_.by_type()) check_one_density();
+  if (settings_.shear_stress_restitution > 0.0) check_wall_types();
+}
+
+// shear_stress tells walls from parcels by atom type: the walls' types as the contacts were scaled must still
+// be all of them (a parcel of a wall type is refused as it is assigned).
+void FixParcel::check_wall_types()
+{
+  for (int type : ContactScaling::wall_types(lmp))
+    if (!walls_.count(type))
+      fail("fix " + std::string(id) + " parcel: keyword 'shear_stress' made the contacts of atom type " +
+           std::to_string(type) + " more dissipative as parcels', but a wall defined after the fix uses that type; "
+           "allowed: walls (fix mesh/surface, fix wall/gran primitive) defined before fix parcel");
 }
 
 // The pair rule of dp_by_type (equal_mass_pair_scale_factor) holds for parcels of one mass, i.e. of one
@@ -308,6 +341,14 @@ void FixParcel::print_contact_values()
         << scaling_.describe();
   } else {
     out << ": contact coefficients used as given\n";
+  }
+  if (settings_.shear_stress_restitution > 0.0) {
+    const double e = settings_.shear_stress_restitution;
+    out << "  shear_stress: parcel-parcel dampings raised from restitution " << e << " to "
+        << shear_stress_restitution(e, settings_.largest_parcel_pair_scale_factor())
+        << " at the largest l (1 - e'^2 = l^4 (1 - e^2)); the contacts with wall types";
+    for (int type : walls_) out << " " << type;
+    out << (walls_.empty() ? " (none defined)" : "") << " keep theirs\n";
   }
   if (screen) fputs(out.str().c_str(), screen);
   if (logfile) fputs(out.str().c_str(), logfile);

@@ -5,6 +5,7 @@
 // l = D/dp is the coarse-graining ratio, np = l^3.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace parcelflow::plugins {
@@ -62,6 +63,26 @@ inline double restitution_coefficient(double kn, double gamma_abs, double m_eff)
   const double z = damping_ratio(kn, gamma_abs, m_eff);
   return std::exp(-M_PI * z / std::sqrt(1.0 - z * z));
 }
+// The damping ratio that gives restitution e (restitution_coefficient inverted; 1, critical, at e = 0).
+inline double damping_ratio_of_restitution(double e)
+{
+  if (!(e > 0.0)) return 1.0;
+  const double ln = std::log(e);
+  return -ln / std::sqrt(M_PI * M_PI + ln * ln);
+}
+
+// Parcel-parcel restitution e' that keeps the particles' collisional shear stress at one shear rate (dense
+// kinetic theory: the granular temperature goes as d^2 (shear rate)^2 / (1 - e^2), the viscosity as
+// d sqrt(temperature), so the shear stress as d^2 (shear rate)^2 / sqrt(1 - e^2)): 1 - e'^2 = l^4 (1 - e^2).
+// NaN beyond largest_shear_stress_scale_factor(e), where no restitution >= 0 is dissipative enough.
+inline double shear_stress_restitution(double e, double l)
+{
+  const double loss = l * l * l * l * (1.0 - e * e);
+  if (loss > 1.0 + 1e-12) return std::nan("");
+  return std::sqrt(std::max(0.0, 1.0 - loss));  // the rounding of l at the limit itself
+}
+inline double largest_shear_stress_scale_factor(double e) { return std::pow(1.0 - e * e, -0.25); }
+
 inline double contact_duration(double kn, double gamma_abs, double m_eff)
 {
   const double z = damping_ratio(kn, gamma_abs, m_eff);

@@ -17,7 +17,7 @@ namespace {
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
 const std::vector<std::string> kKeywordList = {"mode", "np", "diameter", "dp", "distribution", "dp_by_type", "seed",
-                                                "scaling"};
+                                                "scaling", "shear_stress"};
 const std::set<std::string> kKeywordSet(kKeywordList.begin(), kKeywordList.end());
 
 std::string keyword_names()
@@ -28,6 +28,23 @@ std::string keyword_names()
 }
 const std::string kTypeDiameterAllowed =
     "a particle diameter > 0 and <= diameter, or none (an atom type without parcels, e.g. the walls)";
+
+// shear_stress lowers the parcel-parcel restitution of the linearly scaled contacts, as far as 0 at most.
+void check_shear_stress(const ParcelSettings& s)
+{
+  if (s.scaling != CollisionScaling::Linear)
+    fail("keyword 'shear_stress' changes the linearly scaled contacts; allowed with scaling linear only");
+  const double e = s.shear_stress_restitution, l = s.largest_parcel_pair_scale_factor();
+  const double limit = largest_shear_stress_scale_factor(e);
+  if (l > limit * (1.0 + 1e-12)) {
+    std::ostringstream msg;
+    msg.precision(4);
+    msg << "keyword 'shear_stress' " << e << " needs 1 - e'^2 = l^4 (1 - " << e << "^2) <= 1, i.e. l = D/dp <= "
+        << limit << ", but the parcels have l = " << l << "; allowed: fewer particles per parcel, or no "
+        << "shear_stress";
+    fail(msg.str());
+  }
+}
 
 }  // namespace
 
@@ -64,6 +81,18 @@ double ParcelSettings::pair_scale_factor(int type_i, int type_j) const
   if (dp_i == kNoParcels) return parcel_diameter / dp_j;
   return equal_mass_pair_scale_factor(particles_per_parcel(parcel_diameter, dp_i),
                                       particles_per_parcel(parcel_diameter, dp_j));
+}
+
+double ParcelSettings::largest_parcel_pair_scale_factor() const
+{
+  if (!by_type()) return uniform_scale_factor();
+  double largest = 0.0;
+  const int ntypes = static_cast<int>(type_diameters.size());
+  for (int i = 1; i <= ntypes; ++i)
+    for (int j = i; j <= ntypes; ++j)
+      if (type_diameters[i - 1] != kNoParcels && type_diameters[j - 1] != kNoParcels)
+        largest = std::max(largest, pair_scale_factor(i, j));
+  return largest;
 }
 
 const char* to_string(ParcelMode mode)
@@ -189,6 +218,13 @@ ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
       else if (v == "linear") s.scaling = CollisionScaling::Linear;
       else fail("keyword 'scaling' got " + quoted(v) + "; allowed: none, linear");
       i += 2;
+    } else if (key == "shear_stress") {
+      const double v = parse_number(key, value_of(key, "the particles' restitution coefficient"));
+      if (!(v > 0.0 && v < 1.0))
+        fail("keyword 'shear_stress' got " + quoted(args[i + 1]) +
+             "; allowed: the particles' restitution coefficient, > 0 and < 1");
+      s.shear_stress_restitution = v;
+      i += 2;
     } else {
       fail("unknown keyword " + quoted(key) + "; allowed keywords: " + keyword_names());
     }
@@ -230,6 +266,7 @@ ParcelSettings parse_parcel_settings(const std::vector<std::string>& args)
            " particle diameters; allowed: scaling none, or a single size (dp), one size per atom type "
            "(dp_by_type), or mode constant_np");
   }
+  if (s.shear_stress_restitution > 0.0) check_shear_stress(s);
   return s;
 }
 

@@ -36,6 +36,9 @@ struct ParcelSettings {
   std::vector<double> type_diameters;
   std::uint32_t seed = 12345679;    // orders classes with equal fractions in the assignment sequence
   CollisionScaling scaling = CollisionScaling::None;
+  // shear_stress E (scaling linear only): E is the particles' restitution, which the script's dampings give;
+  // parcel-parcel contacts are made more dissipative, 1 - e'^2 = l^4 (1 - E^2) (parcel_math.h). 0: off.
+  double shear_stress_restitution = 0.0;
 
   bool by_type() const { return !type_diameters.empty(); }
   // l = D/dp if it is the same for every parcel of the fix (constant_np, or a single size class `dp`);
@@ -45,6 +48,8 @@ struct ParcelSettings {
   // or with dp_by_type equal_mass_pair_scale_factor (parcel_math.h) of the two types' np, D/dp of the parcel type
   // against a type without parcels (a wall), and 1 between two types without parcels (no such contact).
   double pair_scale_factor(int type_i, int type_j) const;
+  // The largest l of a contact of two parcels (types without parcels excluded).
+  double largest_parcel_pair_scale_factor() const;
 };
 
 // Parses the arguments after the style name, e.g. {"mode","constant_np","np","8","scaling","linear"}.

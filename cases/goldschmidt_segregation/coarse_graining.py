@@ -25,8 +25,15 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
                the sliding losses of a collision grow about as mu, so this keeps the frictional share of the
                dissipation per unit mass as well (without friction np 8 stops bubbling: README.md); the
                walls keep their friction. It overrides a --set of liggghts.variables.bead_friction
-  np8_linear_dissipation_l2  np8_linear with 1 - e'^2 = l^2 (1 - e^2) (0.97 -> 0.874): the collisional stress
-               at one shear rate the beads' (dense kinetic theory: the stress goes as d^2 (shear rate)^2 / (1 - e^2))
+  np8_linear_dissipation_l2  np8_linear with 1 - e'^2 = l^2 (1 - e^2) (0.97 -> 0.874): the collisional pressure
+               at one shear rate the beads' (dense kinetic theory: the granular temperature, and with it the
+               pressure, goes as d^2 (shear rate)^2 / (1 - e^2))
+  np8_linear_dissipation_l4  np8_linear with 1 - e'^2 = l^4 (1 - e^2) (0.97 -> 0.233): the collisional shear
+               stress at one shear rate the beads' (the viscosity goes as d sqrt(temperature), so the shear
+               stress as d^2 (shear rate)^2 / sqrt(1 - e^2)); fix parcel's `shear_stress 0.97`
+  np2_linear_dissipation_l4, np3.375_linear_dissipation_l4, mono_np8_linear_dissipation_l4  the same rule
+               (0.97 -> 0.922 at l = 1.26, 0.837 at l = 1.5, 0.233 at l = 2) for np2_linear, np3.375_linear and
+               mono_np8_linear
   mono_fine    2 mm beads of one size for both types (the mixture's bed mass), one per parcel: whether what
                coarse graining does to the mixture needs a mixture
   mono_np3.375_linear, mono_np8_linear  3.375 and 8 of those beads per parcel: 3 and 4 mm parcels, scaling
@@ -100,9 +107,14 @@ STEPS_PER_CONTACT = 11
 INSERTION_ROOM = {"d2.5mm_linear": 1.15, "mono_fine": 1.15, "mono_np3.375_linear": 1.15}
 
 # Variants whose parcel-parcel restitution is lowered to 1 - e'^2 = l^k (1 - e^2), by k: k = 1 keeps the fine bed's
-# collisional dissipation per unit mass; k = 2 its collisional stress at one shear rate (kinetic theory's dense
-# limit: the granular temperature, and with it the stress, goes as d^2 (shear rate)^2 / (1 - e^2)).
+# collisional dissipation per unit mass; k = 2 its collisional pressure at one shear rate, k = 4 its collisional
+# shear stress (kinetic theory's dense limit: the granular temperature goes as d^2 (shear rate)^2 / (1 - e^2), the
+# viscosity as d sqrt(temperature)).
 KEEP_DISSIPATION = {"np8_linear_dissipation": 1, "np8_linear_dissipation_friction": 1, "np8_linear_dissipation_l2": 2}
+# Variants with k = 4, by fix parcel's keyword `shear_stress` (the beads' restitution; the plugin lowers the
+# parcel-parcel restitution to the same e' from the script's dampings and keeps the walls').
+SHEAR_STRESS = {"np2_linear_dissipation_l4", "np3.375_linear_dissipation_l4", "np8_linear_dissipation_l4",
+                "mono_np8_linear_dissipation_l4"}
 # Variants whose parcel-parcel friction is l times the beads': the frictional share of the dissipation too.
 SCALE_FRICTION = {"np8_linear_dissipation_friction"}
 
@@ -136,12 +148,20 @@ VARIANTS = {
                                         tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "np8_linear_dissipation_l2": ("np8_linear with parcel-parcel restitution 1 - e'^2 = l^2 (1 - e^2)",
                                   tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "np8_linear_dissipation_l4": ("np8_linear with parcel-parcel restitution 1 - e'^2 = l^4 (1 - e^2)",
+                                  tuple(2 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "np2_linear_dissipation_l4": ("np2_linear with parcel-parcel restitution 1 - e'^2 = l^4 (1 - e^2)",
+                                  tuple(2 ** (1 / 3) * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
+    "np3.375_linear_dissipation_l4": ("np3.375_linear with parcel-parcel restitution 1 - e'^2 = l^4 (1 - e^2)",
+                                      tuple(1.5 * d for d in BEAD_DIAMETERS), "constant_np", "linear"),
     "mono_fine": ("2 mm beads of one size for both types, one per parcel", MONO_BEADS, "constant_np", "none",
                   MONO_BEADS),
     "mono_np3.375_linear": ("3.375 of the 2 mm beads per parcel: 3 mm parcels, scaling linear",
                             tuple(1.5 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
     "mono_np8_linear": ("8 of the 2 mm beads per parcel: 4 mm parcels, scaling linear",
                         tuple(2 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
+    "mono_np8_linear_dissipation_l4": ("mono_np8_linear with parcel-parcel restitution 1 - e'^2 = l^4 (1 - e^2)",
+                                       tuple(2 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
 }
 
 
@@ -211,6 +231,8 @@ class Plan:
         else:
             dp = " ".join(f"{d:.12g}" for d in self.beads)
             args = f"mode constant_diameter diameter {self.diameters[0]:.12g} dp_by_type {dp} none scaling {self.scaling}"
+        if self.name in SHEAR_STRESS:
+            args += f" shear_stress {RESTITUTION}"
         # the free settling as long in seconds as the fine bed's, the filling as long per metre of region height
         stretch = fine_dem_step / self.dem_step
         fill_stretch = stretch * (self.fill_top - FILL_BOTTOM) / (fine_top - FILL_BOTTOM)

@@ -111,6 +111,8 @@ long DemParcels::globalCount() const {
 
 int DemParcels::ntypes() const { return lmp_->atom->ntypes; }
 
+bool DemParcels::keepsShearStress() const { return parcel_->settings().shear_stress_restitution > 0.0; }
+
 std::vector<double> DemParcels::meanHeightPerType() const {
   const LAMMPS_NS::Atom* atom = lmp_->atom;
   const int ntypes = atom->ntypes;

@@ -37,6 +37,8 @@ class DemParcels {
   // The script's `fix parcel/reinject`, or null.
   const plugins::FixParcelReinject* reinjection() const { return reinject_; }
   int ntypes() const;
+  // fix parcel's shear_stress is on (parcel-parcel restitution lowered to keep the particles' shear stress)
+  bool keepsShearStress() const;
   // Mass-weighted mean height of each atom type (index type-1); NaN for an empty type. Collective.
   std::vector<double> meanHeightPerType() const;
   double totalMass() const;  // collective

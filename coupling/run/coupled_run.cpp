@@ -193,6 +193,7 @@ void CoupledRun::initialize() {
   kernel_reach.smoothing_length = cs.coupling.kernel.smoothing_length;
   kernel_reach.spills_excess = s.spill_excess_solids;
   kernel_reach.class_collisions = cs.coupling.class_collisions.enabled;
+  kernel_reach.keeps_shear_stress = s.dem->parcels().keepsShearStress();
   const std::array<bool, 3> dem_periodic = s.dem->periodicAxes();
   kernel_reach.narrowest_extent = narrowestExtentBetweenWalls(
       {grid.spacing[0] * grid.cells[0], grid.spacing[1] * grid.cells[1], grid.spacing[2] * grid.cells[2]}, dem_periodic);

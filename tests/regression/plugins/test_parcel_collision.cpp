@@ -3,7 +3,8 @@
 // in proportion to l. Both damping conventions of hooke/stiffness (mass-specific gamman and
 // absolute_damping on with gamman_abs) are checked. With dp_by_type (two particle sizes in parcels of one
 // diameter) the contact of the two types and that of a type with the wall keep the restitution of the
-// particle pair and last l times as long, l of the pair's rule.
+// particle pair and last l times as long, l of the pair's rule. With shear_stress E the parcel-parcel
+// restitution is 1 - e'^2 = l^4 (1 - E^2) and the wall contacts keep theirs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,7 +108,9 @@ double particle_mass(double d) { return kRho * M_PI / 6.0 * d * d * d; }
 
 // A type-1 parcel hitting a type-2 parcel (against_wall false) or the wall, with the particle-level
 // mass-specific dampings g12 (types 1-2) and g13 (type 1 - wall).
-Collision collide_by_type(bool against_wall, double g12, double g13, double dt)
+Collision collide_by_type(bool against_wall, double g12, double g13, double dt,
+                          const char* fix_args = "mode constant_diameter diameter 0.004 dp_by_type 0.001 0.002 none "
+                                                 "scaling linear")
 {
   Session s("none");
   set_variable(s, "D", kParcelD);
@@ -120,7 +123,7 @@ Collision collide_by_type(bool against_wall, double g12, double g13, double dt)
   set_variable(s, "dt", dt);
   set_variable(s, "against_wall", against_wall ? 1 : 0);
   s.file(kDir + "/collision_types.in");
-  s.cmd("fix p all parcel mode constant_diameter diameter 0.004 dp_by_type 0.001 0.002 none scaling linear");
+  s.cmd(std::string("fix p all parcel ") + fix_args);
   s.cmd("run 0");
   std::map<int, std::array<double, 4>> st;
   if (against_wall)
@@ -197,4 +200,39 @@ TEST(ParcelCollision, DiameterByTypeKeepsRestitutionOfEachPair)
     EXPECT_LT(std::fabs(e_err), 0.01);
     EXPECT_LT(std::fabs(t_err), 0.02);
   }
+}
+
+TEST(ParcelCollision, ShearStressLowersTheParcelRestitutionOnly)
+{
+  // np 1.5 (l = 1.145): with the particles' 0.7, e' = sqrt(1 - l^4 0.51) = 0.351
+  const double m_eff = particle_m_eff(), g_abs = particle_gamma_abs();
+  const double l = std::cbrt(1.5), expected = shear_stress_restitution(kTargetE, l);
+  const double dt = contact_duration(kKn, g_abs, m_eff) / 100.0;
+  for (bool absolute : {false, true}) {
+    const Collision c = collide(l, absolute, dt, "linear shear_stress 0.7");
+    PF_PRINT("[ collision ] shear_stress 0.7, np 1.5, absolute_damping %-3s: e = %.6f (1 - e'^2 = l^4 (1 - e^2): "
+             "%.6f, error %+.3f %%)\n", absolute ? "on" : "off", c.e, expected, 100 * (c.e / expected - 1));
+    EXPECT_LT(std::fabs(c.e / expected - 1.0), 0.01);
+  }
+  // np 8 parcels of 4 mm (2 mm particles, restitution 0.97 between them, 0.7 against the wall z = 0, type 3 and
+  // defined before the fix): two parcels (types 1 and 2) reach e' = 0.233, the wall contact keeps its 0.7
+  const double m_eff22 = 0.5 * particle_mass(kDpLarge), m_wall = particle_mass(kDpLarge);
+  const double g12 = 2.0 * damping_ratio_of_restitution(0.97) * std::sqrt(kKn / m_eff22);
+  const double g13 = 2.0 * damping_ratio_of_restitution(kTargetE) * std::sqrt(kKn / m_wall);
+  const double dt_types = contact_duration(kKn, g12 * m_eff22, m_eff22) / 100.0;
+  const char* linear = "mode constant_np np 8 scaling linear";
+  const char* shear = "mode constant_np np 8 scaling linear shear_stress 0.97";
+  const Collision wall = collide_by_type(true, g12, g13, dt_types, linear);
+  const Collision wall_shear = collide_by_type(true, g12, g13, dt_types, shear);
+  const Collision pair = collide_by_type(false, g12, g13, dt_types, linear);
+  const Collision pair_shear = collide_by_type(false, g12, g13, dt_types, shear);
+  const double expected_pair = shear_stress_restitution(0.97, 2.0);
+  PF_PRINT("[ collision ] np 8, scaling linear / with shear_stress 0.97: against the wall e = %.9f / %.9f, two "
+           "parcels e = %.6f / %.6f (expected 0.97 / %.6f)\n", wall.e, wall_shear.e, pair.e, pair_shear.e,
+           expected_pair);
+  EXPECT_EQ(wall.e, wall_shear.e);
+  EXPECT_EQ(wall.steps, wall_shear.steps);
+  EXPECT_NEAR(wall.e, kTargetE, 0.01 * kTargetE);
+  EXPECT_NEAR(pair.e, 0.97, 0.01 * 0.97);
+  EXPECT_NEAR(pair_shear.e, expected_pair, 0.01 * expected_pair);
 }

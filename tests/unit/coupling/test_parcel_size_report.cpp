@@ -130,6 +130,14 @@ TEST(ParcelSizeReport, TellsEveryCoarseGrainedBedThatItBubblesLess) {
   EXPECT_TRUE(mentions(lines[1], "parcels of up to l = D / dp = 1.26 bubble less than their particles")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "expanded 8-18 % less")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "check against a fine run")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "shear_stress, off here")) << lines[1];
+  // with shear_stress: what is left of the deficit with it
+  periodic.keeps_shear_stress = true;
+  const auto kept = pc::parcelSizeReport({0.00315, 2.0, 0.00065, 0.0025, 0.0025}, periodic);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_TRUE(mentions(kept[1], "bubble less than their particles")) << kept[1];
+  EXPECT_TRUE(mentions(kept[1], "with fix parcel's shear_stress, as here")) << kept[1];
+  EXPECT_FALSE(mentions(kept[1], "off here")) << kept[1];
   // single particles: no report, so no warning
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0025, 0.0025}, periodic).empty());
 }

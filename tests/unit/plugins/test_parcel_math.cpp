@@ -80,3 +80,26 @@ TEST(ParcelMath, EqualMassPairScaleFactorKeepsRestitution)
   }
   EXPECT_NEAR(equal_mass_pair_scale_factor(8.0, 8.0), 2.0, 1e-15);
 }
+
+// shear_stress: 1 - e'^2 = l^4 (1 - e^2), the restitution the Goldschmidt beads' parcels get (0.97: 0.922 at
+// l = 2^(1/3), 0.837 at 1.5, 0.233 at 2), none beyond l = (1 - e^2)^(-1/4); the damping ratio of a restitution
+// inverts restitution_coefficient.
+TEST(ParcelMath, ShearStressRestitution)
+{
+  EXPECT_NEAR(shear_stress_restitution(0.97, 1.0), 0.97, 1e-15);
+  EXPECT_NEAR(shear_stress_restitution(0.97, std::cbrt(2.0)), std::sqrt(1 - std::pow(2.0, 4.0 / 3) * 0.0591), 1e-12);
+  EXPECT_NEAR(shear_stress_restitution(0.97, 1.5), std::sqrt(1 - 5.0625 * 0.0591), 1e-12);
+  EXPECT_NEAR(shear_stress_restitution(0.97, 2.0), std::sqrt(1 - 16 * 0.0591), 1e-12);
+  EXPECT_NEAR(shear_stress_restitution(0.97, 2.0), 0.2332, 1e-4);
+  EXPECT_NEAR(largest_shear_stress_scale_factor(0.97), std::pow(0.0591, -0.25), 1e-12);  // 2.028
+  EXPECT_NEAR(shear_stress_restitution(0.97, largest_shear_stress_scale_factor(0.97)), 0.0, 1e-6);
+  EXPECT_TRUE(std::isnan(shear_stress_restitution(0.97, 2.1)));
+  EXPECT_TRUE(std::isnan(shear_stress_restitution(0.7, 1.5)));  // 5.06 x 0.51 > 1
+  const double kn = 1000.0, m_eff = 1e-5;
+  for (double e : {0.97, 0.837, 0.5, 0.2332, 0.01}) {
+    const double zeta = damping_ratio_of_restitution(e);
+    const double g_abs = 2.0 * zeta * std::sqrt(kn * m_eff);
+    EXPECT_NEAR(restitution_coefficient(kn, g_abs, m_eff), e, 1e-12) << e;
+  }
+  EXPECT_EQ(damping_ratio_of_restitution(0.0), 1.0);
+}

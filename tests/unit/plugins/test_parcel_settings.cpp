@@ -156,6 +156,28 @@ TEST(ParcelSettings, Errors)
   expect_error("mode constant_np np 8 dp_by_type 0.001 0.002", {"'dp_by_type' is not allowed with mode constant_np"});
   // within 1e-6 is accepted
   EXPECT_NO_THROW(parse("mode constant_diameter diameter 0.01 distribution 0.001 0.5 0.002 0.5000009"));
+  // shear_stress: the particles' restitution, with scaling linear, for parcels no coarser than it allows
+  expect_error("mode constant_np np 8 shear_stress 0.97", {"'shear_stress'", "scaling linear only"});
+  expect_error("mode constant_np np 8 scaling linear shear_stress 1", {"'shear_stress' got '1'", "> 0 and < 1"});
+  expect_error("mode constant_np np 8 scaling linear shear_stress 0", {"'shear_stress' got '0'"});
+  expect_error("mode constant_np np 8 scaling linear shear_stress", {"'shear_stress' needs a value"});
+  expect_error("mode constant_np np 27 scaling linear shear_stress 0.97",
+               {"'shear_stress' 0.97", "l = D/dp <= 2.028", "the parcels have l = 3;", "fewer particles per parcel"});
+  expect_error("mode constant_np np 8 scaling linear shear_stress 0.9", {"l = D/dp <= 1.515", "the parcels have l = 2;"});
+  expect_error(cd + "dp_by_type 0.0015 0.0025 none scaling linear shear_stress 0.97",
+               {"l = D/dp <= 2.028", "the parcels have l = 3.333"});  // types 1-1: 5 / 1.5 mm
+}
+
+TEST(ParcelSettings, ShearStress)
+{
+  const ParcelSettings s = parse("mode constant_np np 8 scaling linear shear_stress 0.97");
+  EXPECT_EQ(s.shear_stress_restitution, 0.97);
+  EXPECT_NEAR(s.largest_parcel_pair_scale_factor(), 2.0, 1e-14);
+  EXPECT_EQ(parse("mode constant_np np 8 scaling linear").shear_stress_restitution, 0.0);
+  // dp_by_type: the largest l of two parcel types, the wall type (none) left out
+  const ParcelSettings t =
+      parse("mode constant_diameter diameter 0.004 dp_by_type 0.002 0.0025 none scaling linear shear_stress 0.97");
+  EXPECT_NEAR(t.largest_parcel_pair_scale_factor(), 2.0, 1e-14);
 }
 
 TEST(ReinjectSettings, AcceptedFormsAndDefaults)
