@@ -145,9 +145,11 @@ std::set<int> ContactScaling::wall_types(LAMMPS* lmp)
 {
   std::set<int> types;
   for (int k = 0; k < lmp->modify->nfix; ++k) {
-    if (auto* mesh = dynamic_cast<FixMeshSurface*>(lmp->modify->fix[k])) types.insert(mesh->atomTypeWall());
     auto* wall = dynamic_cast<FixWallGran*>(lmp->modify->fix[k]);
-    if (wall && !wall->is_mesh_wall()) types.insert(wall->atom_type_wall());
+    if (!wall) continue;
+    if (!wall->is_mesh_wall()) types.insert(wall->atom_type_wall());
+    else  // not every mesh is a wall (insertion faces are meshes too): only those of a fix wall/gran
+      for (int m = 0; m < wall->n_meshes(); ++m) types.insert(wall->mesh_list()[m]->atomTypeWall());
   }
   return types;
 }

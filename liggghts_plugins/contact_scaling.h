@@ -40,7 +40,7 @@ class ContactScaling {
   // "" if pair_style gran and every fix wall/gran use model hooke/stiffness without cohesion and rolling
   // friction (what linear scaling can scale), else a message.
   static std::string check_contact_models(LAMMPS_NS::LAMMPS* lmp);
-  // The atom types of the walls defined so far: of every fix mesh/surface and of every primitive fix wall/gran.
+  // The atom types of the walls defined so far: of every fix wall/gran (a primitive's, or its meshes').
   static std::set<int> wall_types(LAMMPS_NS::LAMMPS* lmp);
 
  private:

@@ -280,7 +280,7 @@ void FixParcel::check_wall_types()
     if (!walls_.count(type))
       fail("fix " + std::string(id) + " parcel: keyword 'shear_stress' made the contacts of atom type " +
            std::to_string(type) + " more dissipative as parcels', but a wall defined after the fix uses that type; "
-           "allowed: walls (fix mesh/surface, fix wall/gran primitive) defined before fix parcel");
+           "allowed: walls (fix wall/gran) defined before fix parcel");
 }
 
 // The pair rule of dp_by_type (equal_mass_pair_scale_factor) holds for parcels of one mass, i.e. of one
