@@ -84,6 +84,8 @@ import h5py
 import numpy as np
 import yaml
 
+import run_lock  # the folder's own module (sys.path[0] when run, GOLDSCHMIDT when imported by the fluidized set)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 # The beads and contacts of goldschmidt.in; check_script() stops if the script's values disagree.
@@ -448,6 +450,7 @@ def main():
             print(f"  note: the case's own DEM step is {times['dem_step']:.6g} s; the fine run uses the rule's",
                   flush=True)
 
+    run_lock.refuse_if_writing([os.path.join(args.root, plan.name, "run") for plan in plans])
     todo = []
     for plan in plans:
         case, request = set_up(plan, args, fine_config())

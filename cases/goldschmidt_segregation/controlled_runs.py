@@ -23,6 +23,7 @@ import yaml
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+import run_lock  # noqa: E402
 import void_shape  # noqa: E402
 
 # name: (what changes, case.yaml changes {dotted.key: value}, LIGGGHTS script variables {name: value})
@@ -152,6 +153,7 @@ def main():
     unknown = [n for n in names if n not in VARIANTS]
     if unknown:
         sys.exit(f"unknown variant(s) {unknown}; known: {', '.join(VARIANTS)}")
+    run_lock.refuse_if_writing([os.path.join(args.root, n, "run") for n in names])
     todo = [n for n in names if not finished(os.path.join(args.root, n, "run"))]
     running = {}
     while todo or running:

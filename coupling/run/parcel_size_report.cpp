@@ -67,6 +67,11 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                                        "miss, not all of the particles' mixing")
                          : std::string("coupling.class_collisions, off in this run, adds the classes' collisions the "
                                        "parcels miss")) +
+                    (reach.keeps_shear_stress
+                         ? "; fix parcel's shear_stress (on) kept l = 2 mixed in the mean (0.005 and 0.061 over two "
+                           "runs) with bursts to 0.15-0.29 the particles do not show"
+                         : "; fix parcel's shear_stress, off here, kept l = 2 mixed in the mean (0.005 and 0.061 over "
+                           "two runs)") +
                     "; where the classes' mixing matters, use parcels of at most l = " +
                     cfd::shortNumber(kMixtureLengthRatio) +
                     " or check against a fine run (cases/goldschmidt_segregation/README.md, \"Coarse graining: "

@@ -108,6 +108,11 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
       << lines[1];
   EXPECT_TRUE(mentions(lines[1], "use parcels of at most l = 1.5")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "coupling.class_collisions, off in this run, adds")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "shear_stress, off here, kept l = 2 mixed in the mean")) << lines[1];
+  periodic.keeps_shear_stress = true;
+  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic))[1],
+                       "shear_stress (on) kept l = 2 mixed in the mean"));
+  periodic.keeps_shear_stress = false;
   periodic.class_collisions = true;
   EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic))[1],
                        "coupling.class_collisions (on) restores"));
