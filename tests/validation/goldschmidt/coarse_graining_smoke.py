@@ -16,7 +16,9 @@ script checks that the dumped force is the one on the pair's first sphere); disp
 bursts: finite, positive dispersion coefficients for both classes; granular_rheology.py too: finite rows of
 stress and shear rate. class_temperature.py reads the fine and np 8 runs' last snapshots: finite
 temperatures, the unbiased at least the taken one, and about 8 times fewer parcels per kernel for np 8;
-mesoscale.py reads their snapshots: finite, non-negative variances.
+mesoscale.py reads their snapshots: finite, non-negative variances. np8_linear_dissipation_l4 runs once
+(fix parcel's shear_stress 0.97): the fix reports the parcels' restitution 0.233 with the wall type 3 kept, and
+parcelflow's bubbling warning says that shear_stress is on.
 The temporary folder is removed at the end.
 
 usage: coarse_graining_smoke.py PARCELFLOW MPIEXEC...
@@ -75,6 +77,10 @@ def main():
         check_contact_dumps(os.path.join(root_cc, "np8_linear"))
         check_class_temperature(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
         check_mesoscale(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
+        root_ss = os.path.join(work, "runs_shear_stress")
+        run([sys.executable, SCRIPT, parcelflow, root_ss, "np8_linear_dissipation_l4", "--case", case, "--end", "0.02",
+             "--start", "0.01", "--ranks", ranks, "--mpirun", shlex.join(mpirun)])
+        check_shear_stress(os.path.join(root_ss, "np8_linear_dissipation_l4", "run"))
     expect_nothing_left(work, here_before)
     print("PASS")
 
@@ -99,6 +105,15 @@ def check_parcel_reports(root):
             fail(f"{name}: the warning of too few parcels across the bed is {'there' if warned else 'missing'}")
         if mixture != (largest is not None):
             fail(f"{name}: the warning on a coarse-grained size mixture is {'there' if mixture else 'missing'}")
+
+
+def check_shear_stress(run_folder):
+    text = open(os.path.join(run_folder, "stdout.txt"), errors="replace").read()
+    for expected in ("shear_stress: parcel-parcel dampings raised from restitution 0.97 to 0.233238",
+                     "the contacts with wall types 3 keep theirs", "with fix parcel's shear_stress, as here"):
+        if expected not in text:
+            fail(f"np8_linear_dissipation_l4: '{expected}' is not in its output")
+    print("[measured] np8_linear_dissipation_l4: fix parcel's shear_stress 0.97 -> 0.233238, walls kept; warned as on")
 
 
 def check_class_collisions(without, with_model):
