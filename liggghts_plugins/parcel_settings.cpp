@@ -36,7 +36,7 @@ void check_shear_stress(const ParcelSettings& s)
     fail("keyword 'shear_stress' changes the linearly scaled contacts; allowed with scaling linear only");
   const double e = s.shear_stress_restitution, l = s.largest_parcel_pair_scale_factor();
   const double limit = largest_shear_stress_scale_factor(e);
-  if (l > limit * (1.0 + 1e-12)) {
+  if (std::isnan(shear_stress_restitution(e, l))) {
     std::ostringstream msg;
     msg.precision(4);
     msg << "keyword 'shear_stress' " << e << " needs 1 - e'^2 = l^4 (1 - " << e << "^2) <= 1, i.e. l = D/dp <= "
