@@ -52,9 +52,9 @@ std::string ContactScaling::apply(LAMMPS* lmp, const PairScaleFactor& l, const P
     sp.fix_id = pg->id;
     sp.fix = pg;
     double* values = const_cast<double*>(pg->get_values());  // the fix owns a plain malloc'd array
+    const bool is_damping = name.compare(0, 5, "gamma") == 0;
     for (int v = 0; v < rows * cols; ++v) {
       const int type_i = v / cols + 1, type_j = v % cols + 1;
-      const bool is_damping = name.compare(0, 5, "gamma") == 0;
       sp.factors.push_back(factor_of(name, l(type_i, type_j)) * (is_damping ? damping(type_i, type_j) : 1.0));
       sp.original.push_back(values[v]);
       values[v] *= sp.factors.back();

@@ -102,7 +102,8 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   pc::KernelReach periodic = kGoldschmidt;
   periodic.parcel_scale = 2.0;
   periodic.narrowest_extent = 0.15;
-  const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic));
+  const pc::ParcelSizes np8{0.005, 8.0, 0.0025, 0.0015, 0.0025};
+  const auto lines = withoutBubbling(pc::parcelSizeReport(np8, periodic));
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_TRUE(mentions(lines[1], "particles of 1.5 to 2.5 mm (a size mixture) at up to l = D / dp = 2 (limit 1.5)"))
       << lines[1];
@@ -110,11 +111,11 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   EXPECT_TRUE(mentions(lines[1], "coupling.class_collisions, off in this run, adds")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "shear_stress, off here, kept l = 2 mixed in the mean")) << lines[1];
   periodic.keeps_shear_stress = true;
-  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic))[1],
+  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport(np8, periodic))[1],
                        "shear_stress (on) kept l = 2 mixed in the mean"));
   periodic.keeps_shear_stress = false;
   periodic.class_collisions = true;
-  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, periodic))[1],
+  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport(np8, periodic))[1],
                        "coupling.class_collisions (on) restores"));
   periodic.class_collisions = false;
   // np 3.375 (l = 1.5), which remixed as the beads do: within the limit
@@ -130,7 +131,8 @@ TEST(ParcelSizeReport, TellsEveryCoarseGrainedBedThatItBubblesLess) {
   pc::KernelReach periodic = kGoldschmidt;
   periodic.narrowest_extent = std::numeric_limits<double>::infinity();
   periodic.spills_excess = true;
-  const auto lines = pc::parcelSizeReport({0.00315, 2.0, 0.00065, 0.0025, 0.0025}, periodic);
+  const pc::ParcelSizes np2{0.00315, 2.0, 0.00065, 0.0025, 0.0025};
+  const auto lines = pc::parcelSizeReport(np2, periodic);
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_TRUE(mentions(lines[1], "parcels of up to l = D / dp = 1.26 bubble less than their particles")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "expanded 8-18 % less")) << lines[1];
@@ -138,7 +140,7 @@ TEST(ParcelSizeReport, TellsEveryCoarseGrainedBedThatItBubblesLess) {
   EXPECT_TRUE(mentions(lines[1], "shear_stress, off here")) << lines[1];
   // with shear_stress: what is left of the deficit with it
   periodic.keeps_shear_stress = true;
-  const auto kept = pc::parcelSizeReport({0.00315, 2.0, 0.00065, 0.0025, 0.0025}, periodic);
+  const auto kept = pc::parcelSizeReport(np2, periodic);
   ASSERT_EQ(kept.size(), 2u);
   EXPECT_TRUE(mentions(kept[1], "bubble less than their particles")) << kept[1];
   EXPECT_TRUE(mentions(kept[1], "with fix parcel's shear_stress, as here")) << kept[1];
