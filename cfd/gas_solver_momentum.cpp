@@ -80,24 +80,35 @@ void GasSolver::assembleMomentum(double dt) {
   // takes (u_N - u_O) / delta, the derivative along d = x_N - x_O over its normal length, and the
   // normal derivative is that plus J (n - d / (d.n)). Between cut cells' centroids d leaves the normal by
   // O(1) (first order in the velocity without it); between whole cells d is along n and it is zero.
+  // Summed over each cell's faces as fvc::surfaceSum would, without a face field.
   const auto gradU = fvc::grad(m, U_, boundaryVelocity());
-  VectorField tInternal(m.nInternalFaces()), tBoundary(m.nBoundaryFaces());
+  VectorField transposeSource(nOwned, Vec3::Zero());
+  const std::vector<int>& nonOrthogonal = m.nonOrthogonalFaces();  // ascending
+  std::size_t nextNonOrthogonal = 0;
   for (int f = 0; f < m.nInternalFaces(); ++f) {
+    const int o = m.faceOwner(f), n = m.faceNeighbour(f), k = m.faceAxis(f);
     const double w = m.faceWeight(f);
-    const Eigen::Matrix3d J = w * gradU[m.faceOwner(f)] + (1 - w) * gradU[m.faceNeighbour(f)];
-    const Vec3 n = m.faceArea(f) / m.faceMagArea(f);
-    const Vec3 d = m.cellCentre(m.faceNeighbour(f)) - m.cellCentre(m.faceOwner(f));
-    const Vec3 nonOrthogonal = n - d / d.dot(n);
-    tInternal[f] = gamma[f] * (J.transpose() * m.faceArea(f));
-    // Added on its own: inside one expression with the product above, Eigen sums that product in
-    // another order and staircase runs changed in the last bits although this term is zero there.
-    tInternal[f] += gamma[f] * m.faceMagArea(f) * (J * nonOrthogonal);
+    Vec3 t;
+    if (nextNonOrthogonal < nonOrthogonal.size() && nonOrthogonal[nextNonOrthogonal] == f) {
+      const Eigen::Matrix3d J = w * gradU[o] + (1 - w) * gradU[n];
+      t = gamma[f] * (J.transpose() * m.faceArea(f));
+      // Added on its own: inside one expression with the product above, Eigen sums that product in
+      // another order.
+      t += gamma[f] * m.faceMagArea(f) * (J * m.faceNonOrthogonality(f));
+      ++nextNonOrthogonal;
+    } else {
+      // J^T times an area vector along axis k: row k of J times the area (the other rows meet zeros). Eigen
+      // evaluates gamma (J^T A) as (gamma J^T) A, and so does this.
+      const Vec3 Jk = w * gradU[o].row(k).transpose() + (1 - w) * gradU[n].row(k).transpose();
+      t = (gamma[f] * Jk) * m.faceArea(f)[k];
+    }
+    if (o < nOwned) transposeSource[o] += t;
+    if (n < nOwned) transposeSource[n] -= t;
   }
   for (int b = 0; b < m.nBoundaryFaces(); ++b) {
     const int c = m.boundaryCell(b);
-    tBoundary[b] = mu_ * alpha_[c] * (gradU[c].transpose() * m.boundaryArea(b));
+    transposeSource[c] += mu_ * alpha_[c] * (gradU[c].transpose() * m.boundaryArea(b));
   }
-  const VectorField transposeSource = fvc::surfaceSum(m, tInternal, tBoundary);
   for (int c = 0; c < nOwned; ++c) bU_[c] += transposeSource[c];
 
   if (settings_.solver.convection == ConvectionScheme::LimitedLinearUpwind)

@@ -55,29 +55,36 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
   m.exchange(D);
   m.exchange(Dt);
 
+  // Face values interpolated where they are used (the component of the face's axis only for D and Dt).
   const ScalarField alphaF = fvc::interpolate(m, alpha_);
-  const VectorField DF = fvc::interpolate(m, D), DtF = fvc::interpolate(m, Dt);
-  const VectorField HbyAF = fvc::interpolate(m, HbyA);
+  const auto faceValue = [&m](int f, const VectorField& cells) {
+    const double w = m.faceWeight(f);
+    return Vec3(w * cells[m.faceOwner(f)] + (1.0 - w) * cells[m.faceNeighbour(f)]);
+  };
+  const auto faceComponent = [&m](int f, const VectorField& cells, int k) {
+    const double w = m.faceWeight(f);
+    return w * cells[m.faceOwner(f)][k] + (1.0 - w) * cells[m.faceNeighbour(f)][k];
+  };
+  ScalarField phiHbyA(m.nInternalFaces()), coeff(m.nInternalFaces());
+  if (firstCorrector) pEqn_ = std::make_unique<LduMatrix>(m);
+  for (int f = 0; f < m.nInternalFaces(); ++f) {
+    const int k = m.faceAxis(f);
+    const double DFk = faceComponent(f, D, k), DtFk = faceComponent(f, Dt, k);
+    const double snGrad = (pRgh_[m.faceNeighbour(f)] - pRgh_[m.faceOwner(f)]) / m.faceDelta(f);
+    phiHbyA[f] = alphaF[f] * (faceValue(f, HbyA).dot(m.faceArea(f)) + (DtFk - DFk) * snGrad * m.faceMagArea(f));
+    coeff[f] = alphaF[f] * DtFk * m.faceMagArea(f) / m.faceDelta(f);
+    if (firstCorrector) pEqn_->addSymmetric(f, coeff[f]);
+  }
   // Non-orthogonal correction: (p_N - p_O) / delta is the derivative along d = x_N - x_O, and the normal
   // derivative is that plus grad p . (n - d / (d.n)). Between cut cells' centroids d leaves the normal
   // (the pressure gradient along the face enters the flux there); the correction takes the gradient of
   // the previous corrector, explicitly, so the matrix stays symmetric. In the flux it appears through
-  // both pressure terms below, (Dt - D) with the old and -Dt with the new pressure: -D in sum, the
-  // momentum equation's own -D grad p at convergence. Between whole cells d is along n: exactly zero.
-  const VectorField gradPrghF = fvc::interpolate(m, gradPrgh_);
-  ScalarField phiHbyA(m.nInternalFaces()), coeff(m.nInternalFaces());
-  if (firstCorrector) pEqn_ = std::make_unique<LduMatrix>(m);
-  for (int f = 0; f < m.nInternalFaces(); ++f) {
-    const int k = dominantAxis(m.faceArea(f));
-    const double snGrad = (pRgh_[m.faceNeighbour(f)] - pRgh_[m.faceOwner(f)]) / m.faceDelta(f);
-    phiHbyA[f] = alphaF[f] * (HbyAF[f].dot(m.faceArea(f)) +
-                              (DtF[f][k] - DF[f][k]) * snGrad * m.faceMagArea(f));
-    const Vec3 n = m.faceArea(f) / m.faceMagArea(f);
-    const Vec3 d = m.cellCentre(m.faceNeighbour(f)) - m.cellCentre(m.faceOwner(f));
-    // Added on its own, as in the momentum laplacian's correction: staircase sums keep their order.
-    phiHbyA[f] -= alphaF[f] * DF[f][k] * m.faceMagArea(f) * gradPrghF[f].dot(n - d / d.dot(n));
-    coeff[f] = alphaF[f] * DtF[f][k] * m.faceMagArea(f) / m.faceDelta(f);
-    if (firstCorrector) pEqn_->addSymmetric(f, coeff[f]);
+  // both pressure terms, (Dt - D) with the old and -Dt with the new pressure: -D in sum, the momentum
+  // equation's own -D grad p at convergence. Between whole cells it is exactly zero: only the mesh's
+  // non-orthogonal faces take it.
+  for (const int f : m.nonOrthogonalFaces()) {
+    const double DFk = faceComponent(f, D, m.faceAxis(f));
+    phiHbyA[f] -= alphaF[f] * DFk * m.faceMagArea(f) * faceValue(f, gradPrgh_).dot(m.faceNonOrthogonality(f));
   }
   ScalarField phiHbyAB(m.nBoundaryFaces(), 0.0), coeffB(m.nBoundaryFaces(), 0.0);
   ScalarField pB = boundaryPressure();

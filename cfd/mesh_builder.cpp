@@ -128,7 +128,19 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   }
   buildHalo(mesh, part);
   buildFaces(mesh, geometry, cut, groups);
+  addFaceCorrections(mesh);
   return mesh;
+}
+
+// Each internal face's axis and non-orthogonality, from the finished faces and centres (ghosts included).
+void MeshBuilder::addFaceCorrections(Mesh& mesh) {
+  for (int f = 0; f < mesh.nInternalFaces(); ++f) {
+    mesh.faceAxis_.push_back(dominantAxis(mesh.faceArea(f)));
+    const Vec3 n = mesh.faceArea(f) / mesh.faceMagArea(f);
+    const Vec3 d = mesh.cellCentre(mesh.faceNeighbour(f)) - mesh.cellCentre(mesh.faceOwner(f));
+    mesh.faceNonOrthogonality_.push_back(n - d / d.dot(n));
+    if (!mesh.faceNonOrthogonality_.back().isZero(0.0)) mesh.nonOrthogonalFaces_.push_back(f);
+  }
 }
 
 void MeshBuilder::addGhostLayers(Mesh& mesh, const CellGroups& groups, int layers) {

@@ -24,6 +24,7 @@ class MeshBuilder {
   // `cut`: the cut-cell geometry with `walls: cut_cells` (open face areas and wall faces), else none.
   static void buildFaces(Mesh& mesh, const Geometry& geometry, const std::optional<CutCellGeometry>& cut,
                          const CellGroups& groups);
+  static void addFaceCorrections(Mesh& mesh);
   static void addInternalFace(Mesh& mesh, int low, int high, int d, double area, const Vec3& faceCentre,
                               bool cutCells);
   static void addCutCellWall(Mesh& mesh, const Geometry& geometry, int cell, const CutCellWall& wall,

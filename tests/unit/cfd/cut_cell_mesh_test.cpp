@@ -85,6 +85,32 @@ TEST(CutCellMesh, VolumesClosureAndPatches) {
   EXPECT_GT(wall, 0.97 * expected);
 }
 
+// The faces' axis and non-orthogonality n - d / (d.n), d between the centres, that the gas solver reads
+// instead of recomputing them: every face has one, and it is listed as non-orthogonal exactly when it is not
+// zero, which happens only between cut cells' centroids (a staircase of the same geometry has none).
+TEST(CutCellMesh, NonOrthogonalFacesAreThoseBetweenOffsetCentroids) {
+  for (const WallRepresentation walls : {WallRepresentation::CutCells, WallRepresentation::Staircase}) {
+    MeshSettings settings = cutColumnMesh();
+    settings.walls = walls;
+    const Mesh m = MeshBuilder::build(settings, test::columnGeometry(), MPI_COMM_WORLD);
+    std::vector<int> expected;
+    for (int f = 0; f < m.nInternalFaces(); ++f) {
+      const Vec3 n = m.faceArea(f) / m.faceMagArea(f);
+      const Vec3 d = m.cellCentre(m.faceNeighbour(f)) - m.cellCentre(m.faceOwner(f));
+      const Vec3 offset = n - d / d.dot(n);
+      EXPECT_EQ(m.faceAxis(f), dominantAxis(m.faceArea(f)));
+      EXPECT_EQ(m.faceNonOrthogonality(f), offset);
+      EXPECT_DOUBLE_EQ(std::abs(m.faceArea(f)[m.faceAxis(f)]), m.faceMagArea(f));  // axis-aligned
+      if (!offset.isZero(0.0)) expected.push_back(f);
+    }
+    EXPECT_EQ(m.nonOrthogonalFaces(), expected);
+    long listed = static_cast<long>(expected.size());
+    MPI_Allreduce(MPI_IN_PLACE, &listed, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+    if (walls == WallRepresentation::Staircase) EXPECT_EQ(listed, 0);
+    else EXPECT_GT(listed, 0);
+  }
+}
+
 namespace {
 // The pipe of the next two tests on 24 x 24 x 1 cut cells, small ones merged below `smallFraction`.
 MeshSettings sliverPipeMesh(double smallFraction) {
