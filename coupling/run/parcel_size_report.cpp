@@ -68,10 +68,12 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                          : std::string("coupling.class_collisions, off in this run, adds the classes' collisions the "
                                        "parcels miss")) +
                     (reach.keeps_shear_stress
-                         ? "; fix parcel's shear_stress (on) kept l = 2 mixed in the mean (0.005 and 0.061 over two "
-                           "runs) with bursts to 0.15-0.29 the particles do not show"
-                         : "; fix parcel's shear_stress, off here, kept l = 2 mixed in the mean (0.005 and 0.061 over "
-                           "two runs)") +
+                         ? "; fix parcel's shear_stress (on) kept l = 2 mixed in the mean there (0.005, 0.030 and, "
+                           "with coupling.class_collisions, 0.061 in three runs) with bursts to 0.15-0.29 the "
+                           "particles do not show, but not between walls 3 parcels apart (0.606)"
+                         : "; fix parcel's shear_stress, off here, kept l = 2 mixed in the mean there (0.005, 0.030 "
+                           "and, with coupling.class_collisions, 0.061 in three runs), but not between walls 3 "
+                           "parcels apart (0.606)") +
                     "; where the classes' mixing matters, use parcels of at most l = " +
                     cfd::shortNumber(kMixtureLengthRatio) +
                     " or check against a fine run (cases/goldschmidt_segregation/README.md, \"Coarse graining: "
