@@ -6,10 +6,7 @@ namespace {
 template <class T>
 std::vector<T> interpolateT(const Mesh& mesh, const std::vector<T>& cells) {
   std::vector<T> faces(mesh.nInternalFaces());
-  for (int f = 0; f < mesh.nInternalFaces(); ++f) {
-    const double w = mesh.faceWeight(f);
-    faces[f] = w * cells[mesh.faceOwner(f)] + (1.0 - w) * cells[mesh.faceNeighbour(f)];
-  }
+  for (int f = 0; f < mesh.nInternalFaces(); ++f) faces[f] = interpolate(mesh, cells, f);
   return faces;
 }
 
@@ -54,9 +51,7 @@ std::vector<Gradient> gaussGrad(const Mesh& mesh, const std::vector<Value>& cell
   std::vector<Gradient> g(mesh.nLocalCells(), Gradient::Zero());
   for (int f = 0; f < mesh.nInternalFaces(); ++f) {
     const int o = mesh.faceOwner(f), n = mesh.faceNeighbour(f), k = mesh.faceAxis(f);
-    const double w = mesh.faceWeight(f);
-    const Value face = w * cells[o] + (1.0 - w) * cells[n];
-    const Value flux = face * mesh.faceArea(f)[k];
+    const Value flux = interpolate(mesh, cells, f) * mesh.faceArea(f)[k];
     if (o < nOwned) axisPart(g[o], k) += flux;
     if (n < nOwned) axisPart(g[n], k) -= flux;
   }

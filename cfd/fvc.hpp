@@ -14,6 +14,18 @@ using TensorField = std::vector<Eigen::Matrix3d>;  // J(i, j) = d u_i / d x_j
 
 namespace fvc {
 
+// Linear interpolation to internal face f, w x_owner + (1 - w) x_neighbour, of the cell value `value(c)` (a
+// field's entry, one of its components, a row of a tensor). Every face value of the solver is this expression.
+template <class T, class CellValue>
+T interpolate(const Mesh& mesh, int f, const CellValue& value) {
+  const double w = mesh.faceWeight(f);
+  return T(w * value(mesh.faceOwner(f)) + (1.0 - w) * value(mesh.faceNeighbour(f)));
+}
+template <class T>
+T interpolate(const Mesh& mesh, const std::vector<T>& cells, int f) {
+  return interpolate<T>(mesh, f, [&cells](int c) -> const T& { return cells[c]; });
+}
+
 // Linear interpolation to internal faces (cell field with valid ghosts).
 ScalarField interpolate(const Mesh& mesh, const ScalarField& cells);
 VectorField interpolate(const Mesh& mesh, const VectorField& cells);

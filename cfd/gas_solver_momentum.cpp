@@ -87,10 +87,9 @@ void GasSolver::assembleMomentum(double dt) {
   std::size_t nextNonOrthogonal = 0;
   for (int f = 0; f < m.nInternalFaces(); ++f) {
     const int o = m.faceOwner(f), n = m.faceNeighbour(f), k = m.faceAxis(f);
-    const double w = m.faceWeight(f);
     Vec3 t;
     if (nextNonOrthogonal < nonOrthogonal.size() && nonOrthogonal[nextNonOrthogonal] == f) {
-      const Eigen::Matrix3d J = w * gradU[o] + (1 - w) * gradU[n];
+      const Eigen::Matrix3d J = fvc::interpolate(m, gradU, f);
       t = gamma[f] * (J.transpose() * m.faceArea(f));
       // Added on its own: inside one expression with the product above, Eigen sums that product in
       // another order.
@@ -99,7 +98,7 @@ void GasSolver::assembleMomentum(double dt) {
     } else {
       // J^T times an area vector along axis k: row k of J times the area (the other rows meet zeros). Eigen
       // evaluates gamma (J^T A) as (gamma J^T) A, and so does this.
-      const Vec3 Jk = w * gradU[o].row(k).transpose() + (1 - w) * gradU[n].row(k).transpose();
+      const Vec3 Jk = fvc::interpolate<Vec3>(m, f, [&gradU, k](int c) { return gradU[c].row(k).transpose(); });
       t = (gamma[f] * Jk) * m.faceArea(f)[k];
     }
     if (o < nOwned) transposeSource[o] += t;

@@ -57,13 +57,8 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
 
   // Face values interpolated where they are used (the component of the face's axis only for D and Dt).
   const ScalarField alphaF = fvc::interpolate(m, alpha_);
-  const auto faceValue = [&m](int f, const VectorField& cells) {
-    const double w = m.faceWeight(f);
-    return Vec3(w * cells[m.faceOwner(f)] + (1.0 - w) * cells[m.faceNeighbour(f)]);
-  };
   const auto faceComponent = [&m](int f, const VectorField& cells, int k) {
-    const double w = m.faceWeight(f);
-    return w * cells[m.faceOwner(f)][k] + (1.0 - w) * cells[m.faceNeighbour(f)][k];
+    return fvc::interpolate<double>(m, f, [&cells, k](int c) { return cells[c][k]; });
   };
   ScalarField phiHbyA(m.nInternalFaces()), coeff(m.nInternalFaces());
   if (firstCorrector) pEqn_ = std::make_unique<LduMatrix>(m);
@@ -71,7 +66,8 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
     const int k = m.faceAxis(f);
     const double DFk = faceComponent(f, D, k), DtFk = faceComponent(f, Dt, k);
     const double snGrad = (pRgh_[m.faceNeighbour(f)] - pRgh_[m.faceOwner(f)]) / m.faceDelta(f);
-    phiHbyA[f] = alphaF[f] * (faceValue(f, HbyA).dot(m.faceArea(f)) + (DtFk - DFk) * snGrad * m.faceMagArea(f));
+    phiHbyA[f] =
+        alphaF[f] * (fvc::interpolate(m, HbyA, f).dot(m.faceArea(f)) + (DtFk - DFk) * snGrad * m.faceMagArea(f));
     coeff[f] = alphaF[f] * DtFk * m.faceMagArea(f) / m.faceDelta(f);
     if (firstCorrector) pEqn_->addSymmetric(f, coeff[f]);
   }
@@ -84,7 +80,7 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
   // non-orthogonal faces take it.
   for (const int f : m.nonOrthogonalFaces()) {
     const double DFk = faceComponent(f, D, m.faceAxis(f));
-    phiHbyA[f] -= alphaF[f] * DFk * m.faceMagArea(f) * faceValue(f, gradPrgh_).dot(m.faceNonOrthogonality(f));
+    phiHbyA[f] -= alphaF[f] * DFk * m.faceMagArea(f) * fvc::interpolate(m, gradPrgh_, f).dot(m.faceNonOrthogonality(f));
   }
   ScalarField phiHbyAB(m.nBoundaryFaces(), 0.0), coeffB(m.nBoundaryFaces(), 0.0);
   ScalarField pB = boundaryPressure();

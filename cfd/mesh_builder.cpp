@@ -132,10 +132,9 @@ Mesh MeshBuilder::build(const MeshSettings& settings, const Geometry& geometry, 
   return mesh;
 }
 
-// Each internal face's axis and non-orthogonality, from the finished faces and centres (ghosts included).
+// Each internal face's non-orthogonality, from the finished faces and centres (ghosts included).
 void MeshBuilder::addFaceCorrections(Mesh& mesh) {
   for (int f = 0; f < mesh.nInternalFaces(); ++f) {
-    mesh.faceAxis_.push_back(dominantAxis(mesh.faceArea(f)));
     const Vec3 n = mesh.faceArea(f) / mesh.faceMagArea(f);
     const Vec3 d = mesh.cellCentre(mesh.faceNeighbour(f)) - mesh.cellCentre(mesh.faceOwner(f));
     mesh.faceNonOrthogonality_.push_back(n - d / d.dot(n));
@@ -277,6 +276,7 @@ void MeshBuilder::addInternalFace(Mesh& mesh, int low, int high, int d, double a
   mesh.faceOwner_.push_back(lowOwns ? low : high);
   mesh.faceNeighbour_.push_back(lowOwns ? high : low);
   mesh.faceArea_.push_back(areaVector);
+  mesh.faceAxis_.push_back(d);
   mesh.faceMagArea_.push_back(area);
   mesh.faceCentre_.push_back(faceCentre);
   if (!cutCells) {
