@@ -53,7 +53,8 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                            "bed's 5 mm parcels, 3 across); use smaller parcels",
                            across, 1e3 * D, 1e3 * reach.narrowest_extent, kParcelsAcrossTheNarrowestExtent));
   const double length_ratio = std::cbrt(sizes.largest_np);  // the largest D / dp
-  if (sizes.largest_dp > sizes.smallest_dp * (1.0 + 1e-6) && length_ratio > kMixtureLengthRatio * (1.0 + 1e-9))
+  const bool mixture = sizes.largest_dp > sizes.smallest_dp * (1.0 + 1e-6);
+  if (mixture && length_ratio > kMixtureLengthRatio * (1.0 + 1e-9))
     lines.push_back(formatNumbers("parcelflow: warning: the parcels stand for particles of %.4g to %.4g mm (a size "
                                   "mixture) at up to l = D / dp = %.3g (limit %.3g): ",
                                   1e3 * sizes.smallest_dp, 1e3 * sizes.largest_dp, length_ratio, kMixtureLengthRatio) +
@@ -78,7 +79,18 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                     cfd::shortNumber(kMixtureLengthRatio) +
                     " or check against a fine run (cases/goldschmidt_segregation/README.md, \"Coarse graining: "
                     "causes\")");
-  if (length_ratio > kBubblingLengthRatio * (1.0 + 1e-9))
+  double bubbling_limit = kBubblingLengthRatio;
+  if (reach.keeps_shear_stress && !mixture) bubbling_limit = kBubblingLengthRatioOneSizeWithShearStress;
+  if (reach.keeps_shear_stress && mixture && reach.class_collisions)
+    bubbling_limit = kBubblingLengthRatioMixtureWithShearStressAndClassCollisions;
+  if (length_ratio <= bubbling_limit * (1.0 + 1e-9) && bubbling_limit > kBubblingLengthRatio)
+    lines.push_back(formatNumbers("parcelflow: coarse graining: l = D / dp = %.3g is within the measured range of fix "
+                                  "parcel's shear_stress (l <= %.3g for ",
+                                  length_ratio, bubbling_limit) +
+                    (mixture ? "a size mixture with coupling.class_collisions" : "one particle size") +
+                    "), where the parcels' bed expanded within 5 % of the particles' at about 2 U_mf "
+                    "(cases/coarse_graining/fluidized/README.md)");
+  else if (length_ratio > kBubblingLengthRatio * (1.0 + 1e-9))
     lines.push_back(formatNumbers("parcelflow: warning: parcels of up to l = D / dp = %.3g bubble less than their "
                                   "particles: ",
                                   length_ratio) +
@@ -88,13 +100,14 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                     "drop within 2.3 % (cases/coarse_graining/fluidized/README.md); " +
                     std::string(reach.keeps_shear_stress
                                     ? "with fix parcel's shear_stress, as here, one size expanded within 2.8 % at "
-                                      "l = 2 but the mixture 5.6-10.3 % less at l = 1.26-2 (7.3 % with "
-                                      "coupling.class_collisions), U_mf up to 4.7 % higher: check against a fine run"
+                                      "l = 2, a mixture within 4 % at l = 1.26 with coupling.class_collisions as well "
+                                      "but 5.6-10.3 % less at l = 1.26-2 without it (7.3 % at l = 2 with it), U_mf up "
+                                      "to 4.7 % higher: check against a fine run"
                                     : "fix parcel's shear_stress, off here, lowers the parcels' restitution to keep "
                                       "the particles' collisional shear stress (1 - e'^2 = l^4 (1 - e^2)): one size "
                                       "then expanded within 2.8 % at l = 2, the mixture 5.6-10.3 % less instead of "
-                                      "9-18 %; where bubbles and expansion matter, use it and check against a fine "
-                                      "run"));
+                                      "9-18 % (within 4 % at l = 1.26 with coupling.class_collisions as well); where "
+                                      "bubbles and expansion matter, use it and check against a fine run"));
   return lines;
 }
 

@@ -126,7 +126,7 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0015, 0.0025}, periodic).empty());
 }
 
-TEST(ParcelSizeReport, TellsEveryCoarseGrainedBedThatItBubblesLess) {
+TEST(ParcelSizeReport, TellsACoarseGrainedBedOutsideTheMeasuredRangeThatItBubblesLess) {
   // np 2 (l = 1.26), the smallest l measured, which expanded 9 % less than its beads: warned, naming l
   pc::KernelReach periodic = kGoldschmidt;
   periodic.narrowest_extent = std::numeric_limits<double>::infinity();
@@ -138,13 +138,31 @@ TEST(ParcelSizeReport, TellsEveryCoarseGrainedBedThatItBubblesLess) {
   EXPECT_TRUE(mentions(lines[1], "expanded 8-18 % less")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "check against a fine run")) << lines[1];
   EXPECT_TRUE(mentions(lines[1], "shear_stress, off here")) << lines[1];
-  // with shear_stress: what is left of the deficit with it
+  // with shear_stress one size is within the measured range up to l = 2: said, not warned
   periodic.keeps_shear_stress = true;
-  const auto kept = pc::parcelSizeReport(np2, periodic);
-  ASSERT_EQ(kept.size(), 2u);
-  EXPECT_TRUE(mentions(kept[1], "bubble less than their particles")) << kept[1];
-  EXPECT_TRUE(mentions(kept[1], "with fix parcel's shear_stress, as here")) << kept[1];
-  EXPECT_FALSE(mentions(kept[1], "off here")) << kept[1];
+  for (const pc::ParcelSizes& oneSize : {np2, pc::ParcelSizes{0.005, 8.0, 0.0025, 0.0025, 0.0025}}) {
+    const auto kept = pc::parcelSizeReport(oneSize, periodic);
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_FALSE(mentions(kept[1], "warning")) << kept[1];
+    EXPECT_TRUE(mentions(kept[1], "within the measured range of fix parcel's shear_stress (l <= 2 for one particle "
+                                  "size)")) << kept[1];
+  }
+  // beyond l = 2 (np 27) it is warned again, saying what shear_stress gave
+  const auto np27 = pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, periodic);
+  ASSERT_EQ(np27.size(), 2u);
+  EXPECT_TRUE(mentions(np27[1], "l = D / dp = 3 bubble less than their particles")) << np27[1];
+  EXPECT_TRUE(mentions(np27[1], "with fix parcel's shear_stress, as here")) << np27[1];
+  EXPECT_FALSE(mentions(np27[1], "off here")) << np27[1];
+  // a size mixture at l = 1.26: warned with shear_stress alone, within the range with coupling.class_collisions
+  const pc::ParcelSizes mixtureNp2{0.00315, 2.0, 0.00065, 0.0015, 0.0025};
+  EXPECT_TRUE(mentions(pc::parcelSizeReport(mixtureNp2, periodic).back(), "bubble less than their particles"));
+  periodic.class_collisions = true;
+  const auto both = pc::parcelSizeReport(mixtureNp2, periodic);
+  ASSERT_EQ(both.size(), 2u);
+  EXPECT_TRUE(mentions(both[1], "(l <= 1.26 for a size mixture with coupling.class_collisions)")) << both[1];
+  // and warned at l = 1.5 with both
+  EXPECT_TRUE(mentions(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic).back(),
+                       "l = D / dp = 1.5 bubble less than their particles"));
   // single particles: no report, so no warning
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0025, 0.0025}, periodic).empty());
 }
