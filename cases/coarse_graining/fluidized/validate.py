@@ -193,7 +193,9 @@ def main():
                         "one size)")
     args = p.parse_args()
     if args.variants[0] not in FINE_VARIANTS:
-        sys.exit(f"--variants {' '.join(args.variants)}: the first must be a fine bed ({' or '.join(FINE_VARIANTS)})")
+        p.error(f"--variants {' '.join(args.variants)}: the first must be a fine bed ({' or '.join(FINE_VARIANTS)})")
+    if len(args.variants) < 2:
+        p.error(f"--variants {' '.join(args.variants)}: give at least one coarse variant after the fine bed")
     runs = os.path.abspath(args.runs)
     os.makedirs(runs, exist_ok=True)
     geometry = SIZES[args.size]

@@ -8,6 +8,7 @@ nothing; the test checks that
   * each coarse run had its parcels (np 8, np 27, 5 mm parcels of both classes) and the fine bed's solid mass
     to within one of its largest parcels;
   * the inlet ramped (the bed's case.yaml has the ramp) and the fine bed's pressure drop rose with it;
+  * variants without a coarse one, or not starting with a fine bed, are refused before any run (exit 2);
   * the temporary folder is removed and nothing is left in the working folder.
 
 usage: fluidized_smoke.py PARCELFLOW MPIEXEC... -np N
@@ -16,6 +17,7 @@ import csv
 import math
 import os
 import shlex
+import subprocess
 import sys
 import tempfile
 
@@ -37,6 +39,7 @@ def main():
     del mpirun[mpirun.index("-np"):mpirun.index("-np") + 2]  # coarse_graining.py appends its own
     here_before = set(os.listdir("."))
     with tempfile.TemporaryDirectory(prefix="pf_cg_fluidized_") as work:
+        check_refused(parcelflow, work)
         stdout = run([sys.executable, DRIVER, parcelflow, "--size", "smoke", "--runs", work, "--ranks", ranks,
                       "--mpirun", shlex.join(mpirun)], timeout=900)
         print(stdout)
@@ -48,6 +51,19 @@ def main():
         check_ramp(work)
     expect_nothing_left(work, here_before)
     print("PASS")
+
+
+def check_refused(parcelflow, work):
+    """Variants that cannot make a table are refused with exit 2, naming the key, before any run."""
+    for variants, what in ((["fine"], "at least one coarse variant"), (["np8_linear", "fine"], "must be a fine bed")):
+        runs = os.path.join(work, "refused")
+        result = subprocess.run([sys.executable, DRIVER, parcelflow, "--size", "smoke", "--runs", runs,
+                                 "--variants", *variants], capture_output=True, text=True, timeout=60)
+        if result.returncode != 2 or "--variants" not in result.stderr or what not in result.stderr:
+            fail(f"--variants {' '.join(variants)}: exit {result.returncode}, stderr {result.stderr!r}; "
+                 f"expected exit 2 naming --variants and '{what}'")
+        if os.path.exists(runs):
+            fail(f"--variants {' '.join(variants)}: refused, but made {runs}")
 
 
 def check_diagnostics(stdout):
