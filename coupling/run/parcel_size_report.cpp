@@ -88,8 +88,8 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                                   "parcel's shear_stress (l <= %.3g for ",
                                   length_ratio, bubbling_limit) +
                     (mixture ? "a size mixture with coupling.class_collisions" : "one particle size") +
-                    "), where the parcels' bed expanded within 5 % of the particles' at about 2 U_mf "
-                    "(cases/coarse_graining/fluidized/README.md)");
+                    "), where the parcels' bed expanded within 5 % of the particles' at about 2 U_mf in a box with "
+                    "periodic sides (cases/coarse_graining/fluidized/README.md)");
   else if (length_ratio > kBubblingLengthRatio * (1.0 + 1e-9))
     lines.push_back(formatNumbers("parcelflow: warning: parcels of up to l = D / dp = %.3g bubble less than their "
                                   "particles: ",

@@ -80,7 +80,8 @@ constexpr double kBubblingLengthRatioOneSizeWithShearStress = 2.0;
 constexpr double kBubblingLengthRatioMixtureWithShearStressAndClassCollisions = 1.26;  // np 2: l = 1.2599
 
 // Lines to print: one describing the parcels (only when some parcel holds more than one particle), then one
-// warning per limit broken. Empty for a bed of single particles.
+// warning per limit broken, or a line saying that the bed is within the measured bubbling range. Empty for a
+// bed of single particles.
 std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const KernelReach& reach);
 
 }  // namespace parcelflow::coupling
