@@ -99,13 +99,13 @@ std::vector<std::string> parcelSizeReport(const ParcelSizes& sizes, const Kernel
                     "bed moved with 0.23-0.57 of their motion and expanded 8-18 % less, with U_mf and the pressure "
                     "drop within 2.3 % (cases/coarse_graining/fluidized/README.md); " +
                     std::string(reach.keeps_shear_stress
-                                    ? "with fix parcel's shear_stress, as here, one size expanded within 2.8 % at "
+                                    ? "with fix parcel's shear_stress, as here, one size expanded within 4 % at "
                                       "l = 2, a mixture within 4 % at l = 1.26 with coupling.class_collisions as well "
                                       "but 5.6-10.3 % less at l = 1.26-2 without it (7.3 % at l = 2 with it), U_mf up "
                                       "to 4.7 % higher: check against a fine run"
                                     : "fix parcel's shear_stress, off here, lowers the parcels' restitution to keep "
                                       "the particles' collisional shear stress (1 - e'^2 = l^4 (1 - e^2)): one size "
-                                      "then expanded within 2.8 % at l = 2, the mixture 5.6-10.3 % less instead of "
+                                      "then expanded within 4 % at l = 2, the mixture 5.6-10.3 % less instead of "
                                       "9-18 % (within 4 % at l = 1.26 with coupling.class_collisions as well); where "
                                       "bubbles and expansion matter, use it and check against a fine run"));
   return lines;

@@ -68,14 +68,13 @@ constexpr double kMixtureLengthRatio = 1.5;
 // 1.29 and their parcels 1.19 (l = 1.5) and 1.17 (l = 2); voids held 32 and 14 % of the beads' beds and 1-19 %
 // of the parcels', around emulsions within 0.014 of one gas fraction, with U_mf within 2.3 %. No l measured
 // above 1 kept the expansion within 5 %, so every coarse-grained bed is told. With fix parcel's shear_stress
-// (1 - e'^2 = l^4 (1 - e^2)) the one-size bed at l = 2 expanded within 2.8 % (U_mf -2.1 %), the mixture
-// 5.6-10.3 % short at l = 1.26-2 (7.3 % at l = 2 with coupling.class_collisions), U_mf up to +4.7 %: told
-// what it gains, and a bed with it what is left.
+// (1 - e'^2 = l^4 (1 - e^2)) the mixture was 5.6-10.3 % short at l = 1.26-2 (7.3 % at l = 2 with
+// coupling.class_collisions), U_mf up to +4.7 %: told what it gains, and a bed with it what is left.
 constexpr double kBubblingLengthRatio = 1.0;
 // With fix parcel's shear_stress the beds that expanded within 5 % of their particles in that box: one size at
-// l = 2 (-2.8 %, U_mf -2.1 %), and the mixture at l = 1.26 (np 2) with coupling.class_collisions as well (-4.0 and
-// -3.9 % with two seeds, U_mf +1.7 %), not without it (-5.6 %) nor at l = 2 with it (-7.3 %). Up to these the
-// bubbling warning gives way to a line saying so.
+// l = 2 (-2.8 and -4.0 % with two seeds, U_mf -2.1 / +2.5 %), and the mixture at l = 1.26 (np 2) with
+// coupling.class_collisions as well (-4.0 and -3.9 % with two seeds, U_mf +1.7 %), not without it (-5.6 %) nor
+// at l = 2 with it (-7.3 %). Up to these the bubbling warning gives way to a line saying so.
 constexpr double kBubblingLengthRatioOneSizeWithShearStress = 2.0;
 constexpr double kBubblingLengthRatioMixtureWithShearStressAndClassCollisions = 1.26;  // np 2: l = 1.2599
 
