@@ -74,7 +74,7 @@ constexpr double kBubblingLengthRatio = 1.0;
 // With fix parcel's shear_stress the beds that expanded within 5 % of their particles in that box: one size at
 // l = 2 (-2.8 and -4.0 % with two seeds, U_mf -2.1 / +2.5 %), and the mixture at l = 1.26 (np 2) with
 // coupling.class_collisions as well (-4.0 and -3.9 % with two seeds, U_mf +1.7 %), not without it (-5.6 %) nor
-// at l = 2 with it (-7.3 %). Up to these the bubbling warning gives way to a line saying so.
+// at l = 1.5 (-5.4 and -6.3 %) or 2 (-7.3 %) with it. Up to these the bubbling warning gives way to a line saying so.
 constexpr double kBubblingLengthRatioOneSizeWithShearStress = 2.0;
 constexpr double kBubblingLengthRatioMixtureWithShearStressAndClassCollisions = 1.26;  // np 2: l = 1.2599
 
