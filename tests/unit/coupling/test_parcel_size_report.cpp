@@ -92,7 +92,7 @@ TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
   EXPECT_FALSE(mentions(periodic[0], "wall layer")) << periodic[0];
   // every axis periodic (no walls to count parcels between): neither a count across nor its warning
   bed.narrowest_extent = std::numeric_limits<double>::infinity();
-  const auto unbounded = withoutBubbling(pc::parcelSizeReport({0.05, 8.0, 0.025}, bed));
+  const auto unbounded = withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed));
   ASSERT_EQ(unbounded.size(), 1u);
   EXPECT_FALSE(mentions(unbounded[0], "across")) << unbounded[0];
 }
@@ -146,13 +146,15 @@ TEST(ParcelSizeReport, TellsACoarseGrainedBedOutsideTheMeasuredRangeThatItBubble
     EXPECT_FALSE(mentions(kept[1], "warning")) << kept[1];
     EXPECT_TRUE(mentions(kept[1], "within the measured range of fix parcel's shear_stress (l <= 2 for one particle "
                                   "size)")) << kept[1];
+    // the bubbles were not kept there: said with the numbers
+    EXPECT_TRUE(mentions(kept[1], "voids, though, held 0.70-0.85 of the particles' share")) << kept[1];
   }
   // beyond l = 2 (np 27) it is warned again, saying what shear_stress gave
   const auto np27 = pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, periodic);
-  ASSERT_EQ(np27.size(), 2u);
-  EXPECT_TRUE(mentions(np27[1], "l = D / dp = 3 bubble less than their particles")) << np27[1];
-  EXPECT_TRUE(mentions(np27[1], "with fix parcel's shear_stress, as here")) << np27[1];
-  EXPECT_FALSE(mentions(np27[1], "off here")) << np27[1];
+  ASSERT_EQ(np27.size(), 3u);  // with the warning of parcels 1.8 times h (the next test)
+  EXPECT_TRUE(mentions(np27[2], "l = D / dp = 3 bubble less than their particles")) << np27[2];
+  EXPECT_TRUE(mentions(np27[2], "with fix parcel's shear_stress, as here")) << np27[2];
+  EXPECT_FALSE(mentions(np27[2], "off here")) << np27[2];
   // a size mixture at l = 1.26: warned with shear_stress alone, within the range with coupling.class_collisions
   const pc::ParcelSizes mixtureNp2{0.00315, 2.0, 0.00065, 0.0015, 0.0025};
   EXPECT_TRUE(mentions(pc::parcelSizeReport(mixtureNp2, periodic).back(), "bubble less than their particles"));
@@ -165,4 +167,43 @@ TEST(ParcelSizeReport, TellsACoarseGrainedBedOutsideTheMeasuredRangeThatItBubble
                        "l = D / dp = 1.5 bubble less than their particles"));
   // single particles: no report, so no warning
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0025, 0.0025}, periodic).empty());
+}
+
+TEST(ParcelSizeReport, WarnsForParcelsFarWiderThanTheKernelEvenWithTheExcessSpilled) {
+  // the periodic fluidized box: 3.125 mm cells, spill; np 8 (5 mm, D/h 1.6) kept U_mf, np 27 (7.5 mm, 2.4) not
+  pc::KernelReach box{0.003125, 0.0, std::numeric_limits<double>::infinity()};
+  box.spills_excess = true;
+  EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, box)).size(), 2u);  // + mixture
+  const auto np27 = withoutBubbling(pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, box));
+  ASSERT_EQ(np27.size(), 2u);
+  EXPECT_TRUE(mentions(np27[1], "D = 7.5 mm are 2.4 times the kernel length h = 3.125 mm (limit 1.6 once the "
+                                "gas-fraction floor drops no solids)")) << np27[1];
+  EXPECT_TRUE(mentions(np27[1], "U_mf rose 12.3 %")) << np27[1];
+  // without spill the floor's warning (limit 1) says it instead, once
+  box.spills_excess = false;
+  const auto unspilled = withoutBubbling(pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, box));
+  ASSERT_EQ(unspilled.size(), 2u);
+  EXPECT_TRUE(mentions(unspilled[1], "(limit 1)")) << unspilled[1];
+}
+
+TEST(ParcelSizeReport, WarnsForOneParcelDiameterOverASizeMixture) {
+  pc::KernelReach box{0.003125, 0.0, std::numeric_limits<double>::infinity()};
+  box.spills_excess = true;
+  // the Goldschmidt beads as 5 mm parcels (mode constant_diameter): np 37.04 for the small, 8 for the large
+  const auto d5mm = pc::parcelSizeReport({0.005, 37.04, 0.0035, 0.0015, 0.0025}, box);
+  const auto warned = [](const std::vector<std::string>& lines) {
+    int n = 0;
+    for (const auto& line : lines) n += mentions(line, "parcels of one diameter");
+    return n;
+  };
+  ASSERT_EQ(warned(d5mm), 1) << d5mm.size();
+  for (const auto& line : d5mm)
+    if (mentions(line, "parcels of one diameter"))
+      EXPECT_TRUE(mentions(line, "D = 5 mm stand for particles of 1.5 to 2.5 mm: they pack as spheres of one size"))
+          << line;
+  // as np 8 parcels (3 and 5 mm: the mixture's size ratio) and as one size: not told
+  EXPECT_EQ(warned(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, box)), 0);
+  EXPECT_EQ(warned(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0025, 0.0025}, box)), 0);
+  // 2.5 mm parcels: the large beads single, the small ones 4.63 per parcel
+  EXPECT_EQ(warned(pc::parcelSizeReport({0.0025, 4.63, 0.001, 0.0015, 0.0025}, box)), 1);
 }

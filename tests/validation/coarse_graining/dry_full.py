@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The full dry coarse-graining validation (cases/coarse_graining/dry/validate.py --size full --seeds 3
 --coarse-seeds 8 --require-pass, the README's table) in a temporary folder: fails when a row that its
-scaling claims is outside the 5 % tolerance (on 2026-12-04 8 of 14 were: README.md of the case). About
-50 minutes on one core of the shared 2-core machine.
+scaling claims within the parcels' geometric limits is outside the 5 % tolerance (5 rows, all within it on
+2026-12-04: README.md of the case). About 50 minutes on one core of the shared 2-core machine.
 
 usage: dry_full.py PARCELFLOW LIGGGHTS MPIEXEC...
 """
