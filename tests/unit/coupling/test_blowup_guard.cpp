@@ -1,6 +1,7 @@
 // BlowupGuard (coupling/run/blowup_guard.h): a non-finite gas velocity in one cell of one rank stops every
 // rank with a message that names the quantity, the cell centre, the time, the step and the last checkpoint;
-// a finite state passes. (The Courant, continuity and parcel-loss limits are run end to end in
+// a finite state passes; a Courant number above its limit on a cut-cell mesh points to the known defect of
+// small cut cells. (The Courant, continuity and parcel-loss limits are run end to end in
 // tests/regression/reliability/blowup_guard.py.)
 #include <gtest/gtest.h>
 #include <mpi.h>
@@ -8,7 +9,10 @@
 #include <limits>
 #include <string>
 
+#include <yaml-cpp/yaml.h>
+
 #include "blowup_guard.h"
+#include "cfd/gas_config.hpp"
 
 using namespace parcelflow;
 
@@ -67,4 +71,24 @@ TEST(BlowupGuard, ANonFiniteVelocityOnOneRankStopsEveryRankAndSaysWhere) {
   char where[128];
   std::snprintf(where, sizeof where, "at cell centre (%g, %g, %g)", centre[0], centre[1], centre[2]);
   EXPECT_NE(message.find(where), std::string::npos) << message << " / " << where;
+}
+
+TEST(BlowupGuard, ACourantNumberAboveItsLimitOnCutCellsPointsToTheirKnownDefect) {
+  // a pipe of radius 0.05 m on 12 x 12 x 2 cut cells, and the box column of whole cells
+  const cfd::GasSettings pipe = cfd::GasConfig(YAML::Load(R"(
+mesh: {origin: [-0.06, -0.06, 0.0], lengths: [0.12, 0.12, 0.02], cells: [12, 12, 2], walls: cut_cells}
+geometry: [{shape: {cylinder: {center: [0, 0], radius: 0.05, zmin: 0.0, zmax: 0.02}}}]
+gas: {density: 1.2, viscosity: 1.8e-5, gravity: [0, 0, -9.81]}
+boundaries: {zmin: {type: velocity_inlet, superficial_velocity: [0, 0, 0.1]}, zmax: {type: pressure_outlet},
+             walls: {type: wall}}
+)")).settings();
+  for (const bool cut : {true, false}) {
+    cfd::GasSolver gas(cut ? pipe : boxColumn(), MPI_COMM_WORLD);
+    cfd::StepReport report = gas.advance(1e-3);
+    report.cfl = 2e3;  // above the default limit of 1000
+    const std::string message = guardMessage(gas, report);
+    EXPECT_NE(message.find("gas Courant number 2000 above coupling.guards.max_cfl = 1000"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("Known defect: cut cells of a few tenths") != std::string::npos, cut) << message;
+  }
 }
