@@ -4,15 +4,16 @@ on the 0.9 m column's lid) with 2,000 parcels instead of 540,804, for 0.3 s of i
 copy of the case folder that is removed at the end.
 
 Where the tube meets the lid, the 45 mm cells cut by the tube's circle keep 0.145 of their volume. Left as cells of
-their own (mesh.small_cell_fraction 0.01, 0.05 or 0.1) they carried gas speeds of 400-1,700 m/s within 0.1 s and
-the run diverged at t = 0.10-0.13 s, with or without the pressure's non-orthogonal correction; the case merges
-them (small_cell_fraction 0.2). Checks:
+their own (mesh.small_cell_fraction 0.01, 0.05 or 0.1) they carried gas speeds growing to 60,000 m/s and the run
+diverged at t = 0.10-0.13 s (without the pressure's non-orthogonal correction it did not diverge, but they carried
+400-775 m/s); the case merges them (small_cell_fraction 0.2). Checks:
 - the run ends normally (no divergence guard);
 - at every field snapshot from t = 0.1 s the mean vertical gas speed of the tube's cells from 0.1 m above the lid
   up equals the sparger's flow at that time (its ramp) over the tube's circle within 5 % (the flow there is still
-  nearly plug: 0.99 of it measured; with the cells of 0.145 it was 10-15 times it). The tube's flow is not summed
-  over a cell layer: the field files give a merged cell its master's box only;
-- no gas above the lid is faster than 3 times the tube's mean speed (the spurious speeds were 100-400 times it).
+  nearly plug: 0.99 of it measured; with the cells of 0.145 left alone and the run kept from diverging by
+  dropping the non-orthogonal correction it was 11-30 times it). The tube's flow is not summed over a cell layer:
+  the field files give a merged cell its master's box only;
+- no gas above the lid is faster than 3 times the tube's mean speed (the spurious speeds there were 110-850 times it).
 
 usage: psri_fcc_full_mesh.py PARCELFLOW MPIEXEC...
 """
