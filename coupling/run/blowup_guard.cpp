@@ -58,9 +58,9 @@ std::string BlowupGuard::cutCellHint(const cfd::GasSolver& gas) const {
     cut = mesh.nMembers(c) > 1 || mesh.memberFluidFraction(c, 0) < 1.0;
   int anyCut = 0;
   MPI_Allreduce(&cut, &anyCut, 1, MPI_INT, MPI_MAX, comm_);
-  return anyCut ? "; on cut cells: cells of a few tenths of a cell at a tube's foot carried spurious gas speeds in "
-                  "the full FCC case until merged (cfd/README.md, \"Known defect: cut cells of a few tenths at a "
-                  "tube's foot\"): try a larger mesh.small_cell_fraction (0.2 there)"
+  return anyCut ? "; on cut cells: a geometry plane a hair off a cell face leaves films of fluid across the faces "
+                  "beyond it, which carried spurious gas speeds in the full FCC case (cfd/README.md, \"Known defect: "
+                  "a wall a hair off a cell face\"; warned at the start of the run)"
                 : std::string();
 }
 

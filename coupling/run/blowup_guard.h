@@ -34,7 +34,8 @@ class BlowupGuard {
  private:
   std::string nonFiniteCell(const cfd::GasSolver& gas) const;  // "" or what and where, on every rank
   std::string fastestCell(const cfd::GasSolver& gas) const;    // the largest |u| and its cell centre
-  // On a mesh with cut cells, where to read about the known defect of cut cells of a few tenths ("" otherwise)
+  // On a mesh with cut cells, where to read about the known defect of films left by a wall a hair off a cell face
+  // ("" otherwise)
   std::string cutCellHint(const cfd::GasSolver& gas) const;
 
   MPI_Comm comm_;

@@ -13,7 +13,7 @@
 using namespace parcelflow::cfd;
 
 TEST(CutCellFccColumn, VolumeAndTime) {
-  const double top = 7.4935897;
+  const double top = 7.493589743589744;  // 7.0 x 167 / 156: the lid on a cell face
   const CartesianBackground grid(Vec3(-0.45, -0.45, 0.0), Vec3(0.9, 0.9, top), {20, 20, 167});
   const Geometry column({{Geometry::Op::Union, Primitive::cylinder(0, 0, 0.45, 0.0, 7.0), ""},
                          {Geometry::Op::Union, Primitive::cylinder(0, 0, 0.1, 7.0, top), ""}});

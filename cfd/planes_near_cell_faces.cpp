@@ -1,0 +1,40 @@
+#include "planes_near_cell_faces.hpp"
+
+#include <cmath>
+
+#include "number_text.hpp"
+
+namespace parcelflow::cfd {
+
+namespace {
+
+// Planes closer to a face than this share of the cell are taken as on it (round-off of the lengths).
+constexpr double kOnTheFace = 1e-9;
+
+}  // namespace
+
+std::vector<std::string> planesNearCellFaces(const MeshSettings& mesh, const Geometry& geometry) {
+  std::vector<std::string> found;
+  const char* axisName = "xyz";
+  for (std::size_t i = 0; i < geometry.items().size(); ++i) {
+    const Primitive& p = geometry.items()[i].primitive;
+    if (p.kind() == Primitive::Kind::Surface) continue;  // no axis-aligned planes of its own
+    for (int d = 0; d < 3; ++d) {
+      if (p.kind() != Primitive::Kind::Box && d != 2) continue;  // cylinders and cones: their ends only
+      const double h = mesh.lengths[d] / mesh.cells[d];
+      for (const double plane : {p.lo()[d], p.hi()[d]}) {
+        const double cells = (plane - mesh.origin[d]) / h;
+        const double face = mesh.origin[d] + std::round(cells) * h;
+        const double gap = std::abs(plane - face);
+        if (gap > kOnTheFace * h && gap < mesh.smallCellFraction * h)
+          found.push_back("geometry item " + std::to_string(i + 1) + ": its plane " + axisName[d] + " = " +
+                          shortNumber(plane) + " lies " + formatNumbers("%.3g", gap) + " m off the cell face at " +
+                          exactNumber(face) + " (less than mesh.small_cell_fraction " +
+                          shortNumber(mesh.smallCellFraction) + " of the cell, " + shortNumber(h) + " m)");
+      }
+    }
+  }
+  return found;
+}
+
+}  // namespace parcelflow::cfd
