@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "cartesian_background.hpp"
 #include "number_text.hpp"
 
 namespace parcelflow::cfd {
@@ -15,13 +16,14 @@ constexpr double kOnTheFace = 1e-9;
 
 std::vector<std::string> planesNearCellFaces(const MeshSettings& mesh, const Geometry& geometry) {
   std::vector<std::string> found;
+  const CartesianBackground background(mesh.origin, mesh.lengths, mesh.cells);  // the mesh's own cell size
   const char* axisName = "xyz";
   for (std::size_t i = 0; i < geometry.items().size(); ++i) {
     const Primitive& p = geometry.items()[i].primitive;
     if (p.kind() == Primitive::Kind::Surface) continue;  // no axis-aligned planes of its own
     for (int d = 0; d < 3; ++d) {
       if (p.kind() != Primitive::Kind::Box && d != 2) continue;  // cylinders and cones: their ends only
-      const double h = mesh.lengths[d] / mesh.cells[d];
+      const double h = background.spacing()[d];
       for (const double plane : {p.lo()[d], p.hi()[d]}) {
         const double cells = (plane - mesh.origin[d]) / h;
         const double face = mesh.origin[d] + std::round(cells) * h;

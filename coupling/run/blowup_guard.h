@@ -34,7 +34,7 @@ class BlowupGuard {
  private:
   std::string nonFiniteCell(const cfd::GasSolver& gas) const;  // "" or what and where, on every rank
   std::string fastestCell(const cfd::GasSolver& gas) const;    // the largest |u| and its cell centre
-  // On a mesh with cut cells, where to read about the known defect of films left by a wall a hair off a cell face
+  // With mesh.walls cut_cells, where to read about the known defect of films left by a wall a hair off a cell face
   // ("" otherwise)
   std::string cutCellHint(const cfd::GasSolver& gas) const;
 

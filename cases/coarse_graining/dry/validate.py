@@ -198,6 +198,11 @@ def scatter(values):
     return 100 * float(np.std(values, ddof=1)) / abs(mean(values)) if len(values) > 1 else math.nan
 
 
+def at_least(width, diameters, diameter):
+    """Whether `width` is at least `diameters` parcel diameters (D = dp np^(1/3) is rounded off)."""
+    return width >= diameters * diameter * (1 - 1e-9)
+
+
 def claim(variant, quantity_claimed, within_limits=True):
     """Tolerance text of a row: the 5 % where the variant's scaling claims the quantity and the geometry is within
     the limits of the parcels' size; "outside the rule" where only the geometry is not."""
@@ -253,7 +258,7 @@ def table_rows(results, size):
             add(case, f"{label} / Beverloo fit of the fine runs at D", "kg/s", [predicted], name,
                 runs[name]["rate"], True, f"fine fit: Q = (c (W - k d))^1.5, k = {k:.3g}, d -> D = {1e3 * dp * l:.3g} mm; "
                 f"slot {width / (dp * l):.3g} D wide (limit {OPENING_WIDTH_IN_DIAMETERS:g} D)",
-                within_limits=width >= OPENING_WIDTH_IN_DIAMETERS * dp * l)
+                within_limits=at_least(width, OPENING_WIDTH_IN_DIAMETERS, dp * l))
         if len(silo) == 2:
             coarse_c, coarse_k = beverloo(name, dp * l)
             add("silo", "Beverloo c: slope of Q^(2/3) against the slot width", "kg^(2/3)/(s^(2/3) m)", fine_c, name,
@@ -264,7 +269,7 @@ def table_rows(results, size):
         if "column" in results:
             runs = results["column"]
             width = geometry["column"]["column_width"]
-            within = width >= BODY_WIDTH_IN_DIAMETERS * dp * l * (1 - 1e-9)
+            within = at_least(width, BODY_WIDTH_IN_DIAMETERS, dp * l)
             for key, label in (("runout", "run-out (L - L0)/L0"), ("wall_height", "final height at the wall / initial"),
                                ("centroid_travel", "centroid travel / L0")):
                 add("column", label, "-", runs["fine"][key], name, runs[name][key], True,
