@@ -93,7 +93,7 @@ void GasSolver::assembleMomentum(double dt) {
       t = gamma[f] * (J.transpose() * m.faceArea(f));
       // Added on its own: inside one expression with the product above, Eigen sums that product in
       // another order.
-      t += gamma[f] * m.faceMagArea(f) * (J * m.faceNonOrthogonality(f));
+      t += gamma[f] * m.faceMagArea(f) * (J * m.nonOrthogonality(nextNonOrthogonal));
       ++nextNonOrthogonal;
     } else {
       // J^T times an area vector along axis k: row k of J times the area (the other rows meet zeros). Eigen

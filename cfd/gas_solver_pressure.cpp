@@ -78,9 +78,12 @@ void GasSolver::correctPressure(double dt, bool firstCorrector, bool lastCorrect
   // both pressure terms, (Dt - D) with the old and -Dt with the new pressure: -D in sum, the momentum
   // equation's own -D grad p at convergence. Between whole cells it is exactly zero: only the mesh's
   // non-orthogonal faces take it.
-  for (const int f : m.nonOrthogonalFaces()) {
+  const std::vector<int>& nonOrthogonal = m.nonOrthogonalFaces();
+  for (std::size_t listed = 0; listed < nonOrthogonal.size(); ++listed) {
+    const int f = nonOrthogonal[listed];
     const double DFk = faceComponent(f, D, m.faceAxis(f));
-    phiHbyA[f] -= alphaF[f] * DFk * m.faceMagArea(f) * fvc::interpolate(m, gradPrgh_, f).dot(m.faceNonOrthogonality(f));
+    phiHbyA[f] -= alphaF[f] * DFk * m.faceMagArea(f) *
+                  fvc::interpolate(m, gradPrgh_, f).dot(m.nonOrthogonality(listed));
   }
   ScalarField phiHbyAB(m.nBoundaryFaces(), 0.0), coeffB(m.nBoundaryFaces(), 0.0);
   ScalarField pB = boundaryPressure();

@@ -11,6 +11,7 @@
 // replace the staircase cells without changing the solver.
 #include <mpi.h>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,11 +75,12 @@ class Mesh {
   double faceWeight(int f) const { return faceWeight_[f]; }
   double faceDelta(int f) const { return faceDelta_[f]; }  // owner-to-neighbour centre distance
   int faceAxis(int f) const { return faceAxis_[f]; }  // the axis of the face's normal (faces are axis-aligned)
-  // n - d / (d.n), d = x_N - x_O: what the derivative along d lacks of the normal derivative, per unit gradient
-  // and face (the non-orthogonal correction). Exactly zero between whole cells, so only the faces listed in
-  // nonOrthogonalFaces (between cut cells' centroids) carry one.
-  const Vec3& faceNonOrthogonality(int f) const { return faceNonOrthogonality_[f]; }
+  // The faces where n - d / (d.n), d = x_N - x_O, is not zero (between cut cells' centroids; none between
+  // whole cells), ascending, and that vector of the listed face `listed`: what the derivative along d lacks
+  // of the normal derivative, per unit gradient and face (the non-orthogonal correction). Kept for the
+  // listed faces only, so that a mesh of whole cells pays no memory for it.
   const std::vector<int>& nonOrthogonalFaces() const { return nonOrthogonalFaces_; }
+  const Vec3& nonOrthogonality(std::size_t listed) const { return nonOrthogonality_[listed]; }
 
   // Boundary faces of owned cells; area vector points out of the domain.
   int nBoundaryFaces() const { return static_cast<int>(boundaryCell_.size()); }
@@ -123,8 +125,9 @@ class Mesh {
   std::vector<int> faceOwner_, faceNeighbour_;
   std::vector<Vec3> faceArea_, faceCentre_;
   std::vector<double> faceMagArea_, faceWeight_, faceDelta_;
-  std::vector<int> faceAxis_, nonOrthogonalFaces_;
-  std::vector<Vec3> faceNonOrthogonality_;
+  std::vector<std::int8_t> faceAxis_;
+  std::vector<int> nonOrthogonalFaces_;
+  std::vector<Vec3> nonOrthogonality_;
   std::vector<int> boundaryCell_, boundaryPatch_;
   std::vector<Vec3> boundaryArea_, boundaryCentre_;
   std::vector<double> boundaryMagArea_, boundaryDelta_;

@@ -137,8 +137,10 @@ void MeshBuilder::addFaceCorrections(Mesh& mesh) {
   for (int f = 0; f < mesh.nInternalFaces(); ++f) {
     const Vec3 n = mesh.faceArea(f) / mesh.faceMagArea(f);
     const Vec3 d = mesh.cellCentre(mesh.faceNeighbour(f)) - mesh.cellCentre(mesh.faceOwner(f));
-    mesh.faceNonOrthogonality_.push_back(n - d / d.dot(n));
-    if (!mesh.faceNonOrthogonality_.back().isZero(0.0)) mesh.nonOrthogonalFaces_.push_back(f);
+    const Vec3 offset = n - d / d.dot(n);
+    if (offset.isZero(0.0)) continue;
+    mesh.nonOrthogonalFaces_.push_back(f);
+    mesh.nonOrthogonality_.push_back(offset);
   }
 }
 
@@ -276,7 +278,7 @@ void MeshBuilder::addInternalFace(Mesh& mesh, int low, int high, int d, double a
   mesh.faceOwner_.push_back(lowOwns ? low : high);
   mesh.faceNeighbour_.push_back(lowOwns ? high : low);
   mesh.faceArea_.push_back(areaVector);
-  mesh.faceAxis_.push_back(d);
+  mesh.faceAxis_.push_back(static_cast<std::int8_t>(d));
   mesh.faceMagArea_.push_back(area);
   mesh.faceCentre_.push_back(faceCentre);
   if (!cutCells) {
