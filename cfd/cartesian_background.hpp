@@ -7,6 +7,10 @@
 
 namespace parcelflow::cfd {
 
+// A coordinate within this share of a spacing of a grid plane is on it: the cut-cell geometry moves surface
+// points there onto the plane (MFiX's TOL_SNAP idea), and planesNearCellFaces reports only planes further off.
+constexpr double kOnGridPlane = 1e-9;
+
 class CartesianBackground {
  public:
   CartesianBackground() = default;
@@ -34,6 +38,9 @@ class CartesianBackground {
     return origin_ + Vec3((i + 0.5) * spacing_[0], (j + 0.5) * spacing_[1], (k + 0.5) * spacing_[2]);
   }
   double cellVolume() const { return spacing_.prod(); }
+  // x along `axis` in spacings from the origin: grid plane n lies at n.
+  double inSpacings(int axis, double x) const { return (x - origin_[axis]) / spacing_[axis]; }
+  double planeCoordinate(int axis, long plane) const { return origin_[axis] + plane * spacing_[axis]; }
 
  private:
   Vec3 origin_ = Vec3::Zero();

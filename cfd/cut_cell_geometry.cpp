@@ -24,20 +24,14 @@ namespace {
 using AabbPrimitive = CGAL::AABB_face_graph_triangle_primitive<cgal::Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<cgal::Kernel, AabbPrimitive>>;
 
-// Surface points within this many spacings of a grid plane are moved onto it (MFiX's TOL_SNAP idea):
-// a cap meant to lie on a plane must not leave cells with 1e-16 of fluid or a 1e-16 m solid layer.
-constexpr double snapTolerance = 1e-9;
-
-double planeCoordinate(const CartesianBackground& b, int axis, long plane) {
-  return b.origin()[axis] + plane * b.spacing()[axis];
-}
-
+// Surface points on a grid plane (within kOnGridPlane) are moved onto it: a cap meant to lie on a plane must not
+// leave cells with 1e-16 of fluid or a 1e-16 m solid layer.
 TriangleSurface snappedToGridPlanes(TriangleSurface s, const CartesianBackground& b) {
   for (auto& p : s.points)
     for (int d = 0; d < 3; ++d) {
-      const double t = (p[d] - b.origin()[d]) / b.spacing()[d];
+      const double t = b.inSpacings(d, p[d]);
       const double plane = std::round(t);
-      if (std::abs(t - plane) < snapTolerance) p[d] = planeCoordinate(b, d, static_cast<long>(plane));
+      if (std::abs(t - plane) < kOnGridPlane) p[d] = b.planeCoordinate(d, static_cast<long>(plane));
     }
   return s;
 }
@@ -85,8 +79,8 @@ class CutCellBuilder {
 
  private:
   std::pair<Vec3, Vec3> box(int i, int j, int k, int ni, int nj, int nk) const {
-    const Vec3 lo(planeCoordinate(b_, 0, i), planeCoordinate(b_, 1, j), planeCoordinate(b_, 2, k));
-    const Vec3 hi(planeCoordinate(b_, 0, i + ni), planeCoordinate(b_, 1, j + nj), planeCoordinate(b_, 2, k + nk));
+    const Vec3 lo(b_.planeCoordinate(0, i), b_.planeCoordinate(1, j), b_.planeCoordinate(2, k));
+    const Vec3 hi(b_.planeCoordinate(0, i + ni), b_.planeCoordinate(1, j + nj), b_.planeCoordinate(2, k + nk));
     return {lo, hi};
   }
 

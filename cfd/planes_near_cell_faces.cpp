@@ -7,13 +7,6 @@
 
 namespace parcelflow::cfd {
 
-namespace {
-
-// Planes closer to a face than this share of the cell are taken as on it (round-off of the lengths).
-constexpr double kOnTheFace = 1e-9;
-
-}  // namespace
-
 std::vector<std::string> planesNearCellFaces(const MeshSettings& mesh, const Geometry& geometry) {
   std::vector<std::string> found;
   const CartesianBackground background(mesh.origin, mesh.lengths, mesh.cells);  // the mesh's own cell size
@@ -25,13 +18,16 @@ std::vector<std::string> planesNearCellFaces(const MeshSettings& mesh, const Geo
       if (p.kind() != Primitive::Kind::Box && d != 2) continue;  // cylinders and cones: their ends only
       const double h = background.spacing()[d];
       for (const double plane : {p.lo()[d], p.hi()[d]}) {
-        const double cells = (plane - mesh.origin[d]) / h;
-        const double face = mesh.origin[d] + std::round(cells) * h;
-        const double gap = std::abs(plane - face);
-        if (gap > kOnTheFace * h && gap < mesh.smallCellFraction * h)
+        // on the nearest face as the cut-cell geometry sees it (it snaps planes within kOnGridPlane), or off it
+        const double cells = background.inSpacings(d, plane);
+        const double nearest = std::round(cells);
+        const double offCells = std::abs(cells - nearest);
+        const double face = background.planeCoordinate(d, static_cast<long>(nearest));
+        if (offCells >= kOnGridPlane && offCells < mesh.smallCellFraction)
           found.push_back("geometry item " + std::to_string(i + 1) + ": its plane " + axisName[d] + " = " +
-                          shortNumber(plane) + " lies " + formatNumbers("%.3g", gap) + " m off the cell face at " +
-                          exactNumber(face) + " (less than mesh.small_cell_fraction " +
+                          shortNumber(plane) + " lies " + formatNumbers("%.3g", offCells * h) +
+                          " m off the cell face at " + exactNumber(face) +
+                          " (less than mesh.small_cell_fraction " +
                           shortNumber(mesh.smallCellFraction) + " of the cell, " + shortNumber(h) + " m)");
       }
     }
