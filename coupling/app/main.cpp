@@ -24,6 +24,12 @@ namespace pc = parcelflow::coupling;
 
 namespace {
 
+// Through mpirun a rank's stdout and stderr reach the terminal by separate pipes, and every `<<` on the
+// unbuffered std::cerr is a write of its own: a message written in pieces can be cut by a line of stdout
+// (a test once read "stopped by signal parcelflow: checkpoint ... 15 after a checkpoint"). One write keeps
+// each message whole.
+void printToStderr(const std::string& text) { std::fwrite(text.data(), 1, text.size(), stderr); }
+
 int runDem(const pc::CommandLine& cl) {
   std::vector<std::string> arguments = {"-in", cl.script};
   for (const auto& [name, value] : cl.vars) arguments.insert(arguments.end(), {"-var", name, value});
@@ -36,7 +42,7 @@ int runDem(const pc::CommandLine& cl) {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     const auto error = pc::demStepError("timestep", e.estimate, e.dem_step,
                                         "at the start of the run at step " + std::to_string(e.step));
-    if (rank == 0) std::cerr << "parcelflow: error in script '" << cl.script << "': " << error.what() << "\n";
+    if (rank == 0) printToStderr("parcelflow: error in script '" + cl.script + "': " + error.what() + "\n");
     return 2;
   }
   return 0;
@@ -57,29 +63,30 @@ int runCase(const pc::CommandLine& cl) {
     }
     if (run.stopSignal()) {
       if (rank == 0)
-        std::cerr << "parcelflow: stopped by signal " << run.stopSignal() << " after a checkpoint; continue with\n"
-                  << "  mpirun -np " << ranks << " parcelflow run " << cl.case_folder
-                  << (cl.output_folder.empty() ? "" : " --output " + cl.output_folder) << " --restart "
-                  << run.lastCheckpoint() << "\n";
+        printToStderr("parcelflow: stopped by signal " + std::to_string(run.stopSignal()) +
+                      " after a checkpoint; continue with\n  mpirun -np " + std::to_string(ranks) +
+                      " parcelflow run " + cl.case_folder +
+                      (cl.output_folder.empty() ? "" : " --output " + cl.output_folder) + " --restart " +
+                      run.lastCheckpoint() + "\n");
       return 128 + run.stopSignal();
     }
     run.finalize();
   } catch (const parcelflow::cfd::ConfigError& e) {
     pc::silenceStartUpSignalMessage();
-    if (rank == 0) std::cerr << "parcelflow: error in case '" << cl.case_folder << "': " << e.what() << "\n";
+    if (rank == 0) printToStderr("parcelflow: error in case '" + cl.case_folder + "': " + e.what() + "\n");
     return 2;
   } catch (const pc::DivergedError& e) {
     pc::silenceStartUpSignalMessage();
-    if (rank == 0) std::cerr << "parcelflow: error: " << e.what() << "\n";
+    if (rank == 0) printToStderr(std::string("parcelflow: error: ") + e.what() + "\n");
     return 3;
   } catch (const parcelflow::cfd::InternalError& e) {
     pc::silenceStartUpSignalMessage();
-    std::cerr << "parcelflow: rank " << rank << ": " << e.what()
-              << "\nparcelflow: this is a bug in parcelflow, not in your case; please report it with the case\n";
+    printToStderr("parcelflow: rank " + std::to_string(rank) + ": " + e.what() +
+                  "\nparcelflow: this is a bug in parcelflow, not in your case; please report it with the case\n");
     MPI_Abort(MPI_COMM_WORLD, 70);
   } catch (const std::exception& e) {
     pc::silenceStartUpSignalMessage();
-    std::cerr << "parcelflow: rank " << rank << ": " << e.what() << "\n";
+    printToStderr("parcelflow: rank " + std::to_string(rank) + ": " + e.what() + "\n");
     MPI_Abort(MPI_COMM_WORLD, 1);
   }
   return 0;
@@ -96,7 +103,7 @@ int main(int argc, char** argv) {
   try {
     cl = pc::parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
   } catch (const pc::UsageError& e) {
-    std::cerr << "parcelflow: " << e.what() << "\n\n" << pc::usageText();
+    printToStderr(std::string("parcelflow: ") + e.what() + "\n\n" + pc::usageText());
     return 2;
   }
   if (cl.action == pc::CommandLine::Action::help) {
@@ -108,7 +115,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (cl.action == pc::CommandLine::Action::dem && !std::ifstream(cl.script)) {
-    std::cerr << "parcelflow: cannot read the LIGGGHTS script '" << cl.script << "'\n";
+    printToStderr("parcelflow: cannot read the LIGGGHTS script '" + cl.script + "'\n");
     return 2;
   }
 
