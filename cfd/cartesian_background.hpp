@@ -2,6 +2,7 @@
 // The Cartesian background grid the mesh is cut from: `n` cells per axis of uniform spacing per axis,
 // starting at `origin`. Background index (i, j, k), linear index i + n0 (j + n1 k).
 #include <array>
+#include <cmath>
 
 #include "types.hpp"
 
@@ -38,8 +39,17 @@ class CartesianBackground {
     return origin_ + Vec3((i + 0.5) * spacing_[0], (j + 0.5) * spacing_[1], (k + 0.5) * spacing_[2]);
   }
   double cellVolume() const { return spacing_.prod(); }
-  // x along `axis` in spacings from the origin: grid plane n lies at n.
-  double inSpacings(int axis, double x) const { return (x - origin_[axis]) / spacing_[axis]; }
+  // The grid plane nearest to x along `axis` and how far x lies off it, in spacings (kOnGridPlane: on it).
+  struct NearestPlane {
+    long plane;
+    double offSpacings;
+  };
+  NearestPlane nearestPlane(int axis, double x) const {
+    const double t = (x - origin_[axis]) / spacing_[axis];
+    const double plane = std::round(t);
+    return {static_cast<long>(plane), std::abs(t - plane)};
+  }
+  // Grid plane n along `axis` lies at origin + n spacing.
   double planeCoordinate(int axis, long plane) const { return origin_[axis] + plane * spacing_[axis]; }
 
  private:

@@ -29,9 +29,8 @@ using Tree = CGAL::AABB_tree<CGAL::AABB_traits<cgal::Kernel, AabbPrimitive>>;
 TriangleSurface snappedToGridPlanes(TriangleSurface s, const CartesianBackground& b) {
   for (auto& p : s.points)
     for (int d = 0; d < 3; ++d) {
-      const double t = b.inSpacings(d, p[d]);
-      const double plane = std::round(t);
-      if (std::abs(t - plane) < kOnGridPlane) p[d] = b.planeCoordinate(d, static_cast<long>(plane));
+      const auto nearest = b.nearestPlane(d, p[d]);
+      if (nearest.offSpacings < kOnGridPlane) p[d] = b.planeCoordinate(d, nearest.plane);
     }
   return s;
 }

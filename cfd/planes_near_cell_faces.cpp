@@ -1,7 +1,5 @@
 #include "planes_near_cell_faces.hpp"
 
-#include <cmath>
-
 #include "cartesian_background.hpp"
 #include "number_text.hpp"
 
@@ -19,14 +17,11 @@ std::vector<std::string> planesNearCellFaces(const MeshSettings& mesh, const Geo
       const double h = background.spacing()[d];
       for (const double plane : {p.lo()[d], p.hi()[d]}) {
         // on the nearest face as the cut-cell geometry sees it (it snaps planes within kOnGridPlane), or off it
-        const double cells = background.inSpacings(d, plane);
-        const double nearest = std::round(cells);
-        const double offCells = std::abs(cells - nearest);
-        const double face = background.planeCoordinate(d, static_cast<long>(nearest));
-        if (offCells >= kOnGridPlane && offCells < mesh.smallCellFraction)
+        const auto nearest = background.nearestPlane(d, plane);
+        if (nearest.offSpacings >= kOnGridPlane && nearest.offSpacings < mesh.smallCellFraction)
           found.push_back("geometry item " + std::to_string(i + 1) + ": its plane " + axisName[d] + " = " +
-                          shortNumber(plane) + " lies " + formatNumbers("%.3g", offCells * h) +
-                          " m off the cell face at " + exactNumber(face) +
+                          shortNumber(plane) + " lies " + formatNumbers("%.3g", nearest.offSpacings * h) +
+                          " m off the cell face at " + exactNumber(background.planeCoordinate(d, nearest.plane)) +
                           " (less than mesh.small_cell_fraction " +
                           shortNumber(mesh.smallCellFraction) + " of the cell, " + shortNumber(h) + " m)");
       }
