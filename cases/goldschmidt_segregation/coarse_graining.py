@@ -53,7 +53,7 @@ steps per contact of two parcels (t_c = pi/sqrt(kn/m_eff), parcelflow's check, w
 11 gives the shipped case's step (gas step / 12). The gas step is the case's for all variants.
 
 Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start S] [--ranks N] [--jobs J]
-                          [--set KEY=VALUE ...] [--steps-per-contact N]
+                          [--set KEY=VALUE ...] [--steps-per-contact N] [--restitution E]
                           [--mpirun CMD] [VARIANT ...]
   --case DIR   the fine bed: a folder like this one (default); e.g. a copy with another width or bead count
   --end T      coupled time of every run [s] (default 5); statistics over times in [S, T], --start S (default 1)
@@ -63,10 +63,13 @@ Usage: coarse_graining.py PARCELFLOW OUTPUT_ROOT [--case DIR] [--end T] [--start
   --set KEY=VALUE  sets a key of the case.yaml copies (dotted path, VALUE in YAML), for every variant, e.g.
                --set coupling.kernel.boundary=reflect --set coupling.kernel.parcel_scale=2; parcel snapshots are
                written after the first gas step and at the end unless output.parcels_interval is set
+  --restitution E  the beads' restitution for every pair and the walls (default 0.97, the script's); every
+               variant's dampings follow from it
   --steps-per-contact N  the DEM step rule's N (default 11; 22 halves every variant's DEM step, the control
                of whether the scaled contacts are resolved finely enough)
   Each variant runs in OUTPUT_ROOT/VARIANT/ (case copy in case/, run in run/). A variant whose run finished
-  with the same case settings, --end and --ranks is not run again, so the script can be called again to
+  with the same case settings, --end and --ranks is not run again; one that stopped after writing checkpoints
+  (--set output.checkpoint_interval=T) continues from its newest, so the script can be called again to
   add variants or to rebuild the table. Without VARIANT names: the Goldschmidt comparison, DEFAULT_VARIANTS
   (np3.375_linear, np27_linear and the np8_linear_dissipation variants by name only). The table goes to stdout and to
   OUTPUT_ROOT/coarse_graining.csv.
@@ -185,16 +188,16 @@ def sphere_mass(d):
     return DENSITY * math.pi / 6 * d ** 3
 
 
-def damping_matrix(masses, parcel_restitution=RESTITUTION):
+def damping_matrix(masses, parcel_restitution=RESTITUTION, wall_restitution=RESTITUTION):
     """gamman = gammat (mass-specific) of types 1-3: 2 w0 (-ln e)/sqrt(pi^2 + ln^2 e), w0 = sqrt(k/m_eff);
-    e = parcel_restitution between parcels, RESTITUTION at the wall (type 3: m_eff = the parcel's mass; 3-3
+    e = parcel_restitution between parcels, wall_restitution at the wall (type 3: m_eff = the parcel's mass; 3-3
     as 2-3, not used)."""
     def gamma(m_eff, e):
         ln = math.log(e)
         return 2 * math.sqrt(SPRING / m_eff) * -ln / math.sqrt(math.pi ** 2 + ln ** 2)
 
     m1, m2, e = *masses, parcel_restitution
-    pair, wall = gamma(m1 * m2 / (m1 + m2), e), (gamma(m1, RESTITUTION), gamma(m2, RESTITUTION))
+    pair, wall = gamma(m1 * m2 / (m1 + m2), e), (gamma(m1, wall_restitution), gamma(m2, wall_restitution))
     rows = [[gamma(m1 / 2, e), pair, wall[0]], [pair, gamma(m2 / 2, e), wall[1]], [wall[0], wall[1], wall[1]]]
     return "  ".join(" ".join(f"{g:.6g}" for g in row) for row in rows)
 
@@ -203,8 +206,9 @@ class Plan:
     """What one variant runs: its parcels, DEM step and LIGGGHTS variables, for a fine bed of nbeads."""
 
     def __init__(self, name, nbeads, gas_step, fine_dem_step, settle_steps, width, depth, height, fill_top,
-                 steps_per_contact=STEPS_PER_CONTACT):
+                 steps_per_contact=STEPS_PER_CONTACT, restitution=RESTITUTION):
         self.name = name
+        self.restitution = restitution  # the beads' (every pair and the walls)
         self.description, self.diameters, self.mode, self.scaling, *beads = VARIANTS[name]
         self.beads = beads[0] if beads else BEAD_DIAMETERS
         self.masses = [sphere_mass(d) for d in self.diameters]
@@ -220,6 +224,13 @@ class Plan:
         self.steps_per_gas_step = steps
         self.fill_top = self.insertion_top(width, depth, height, fill_top)
         self.variables = {} if name == "fine" else self.coarse_variables(fine_dem_step, settle_steps, fill_top)
+        if name == "fine" and restitution != RESTITUTION:  # the script's damping is for RESTITUTION
+            self.variables["damping"] = self.damping([sphere_mass(d) for d in self.beads])
+
+    def damping(self, masses, parcel_restitution=None):
+        """damping_matrix with the beads' restitution at the walls and, unless given, between parcels."""
+        e = self.restitution
+        return damping_matrix(masses, e if parcel_restitution is None else parcel_restitution, e)
 
     def insertion_top(self, width, depth, height, fine_top):
         """Top of the insertion region at which the solid volume over the volume the centres of the largest
@@ -241,7 +252,7 @@ class Plan:
             dp = " ".join(f"{d:.12g}" for d in self.beads)
             args = f"mode constant_diameter diameter {self.diameters[0]:.12g} dp_by_type {dp} none scaling {self.scaling}"
         if self.name in SHEAR_STRESS:
-            args += f" shear_stress {RESTITUTION}"
+            args += f" shear_stress {self.restitution}"
         # the free settling as long in seconds as the fine bed's, the filling as long per metre of region height
         stretch = fine_dem_step / self.dem_step
         fill_stretch = stretch * (self.fill_top - FILL_BOTTOM) / (fine_top - FILL_BOTTOM)
@@ -251,14 +262,15 @@ class Plan:
                      "fill_drag_large_factor": f"{self.masses[1] / self.masses[0]:.6g}",
                      "fill_top": f"{self.fill_top:.4f}", "settle_steps": str(round(settle_steps * fill_stretch)),
                      "free_steps": str(round(FREE_STEPS * stretch))}
-        if self.beads != BEAD_DIAMETERS:  # the script's damping is the mixture's beads'; these beads' own
-            variables["damping"] = damping_matrix([sphere_mass(d) for d in self.beads])
+        if self.beads != BEAD_DIAMETERS or self.restitution != RESTITUTION:
+            # the script's damping is the mixture's beads' at RESTITUTION; these beads' own
+            variables["damping"] = self.damping([sphere_mass(d) for d in self.beads])
         if self.scaling == "none":  # parcel values: the beads' spring and restitution with the parcels' masses
-            variables["damping"] = damping_matrix(self.masses)
+            variables["damping"] = self.damping(self.masses)
         l = self.diameters[0] / self.beads[0]  # D / d of the variants that keep the beads' losses
         if self.name in KEEP_DISSIPATION:  # the beads' values for e'; scaling linear keeps e' for the parcels
-            restitution = math.sqrt(1 - l ** KEEP_DISSIPATION[self.name] * (1 - RESTITUTION ** 2))
-            variables["damping"] = damping_matrix([sphere_mass(d) for d in self.beads], restitution)
+            restitution = math.sqrt(1 - l ** KEEP_DISSIPATION[self.name] * (1 - self.restitution ** 2))
+            variables["damping"] = self.damping([sphere_mass(d) for d in self.beads], restitution)
         if self.name in SCALE_FRICTION:
             variables["bead_friction"] = f"{l * BEAD_FRICTION:.6g}"
         return variables
@@ -331,15 +343,34 @@ def finished(run, request):
         return False
 
 
+def newest_checkpoint(run, request):
+    """The newest checkpoint of an unfinished run of exactly this request, or None."""
+    try:
+        if yaml.safe_load(open(os.path.join(run, "request.yaml"))) != request:
+            return None
+    except OSError:
+        return None
+    steps = glob.glob(os.path.join(run, "checkpoints", "step_[0-9]*"))
+    return max(steps, key=lambda path: int(path.rsplit("_", 1)[1])) if steps else None
+
+
 def start(plan, case, request, args):
+    """Starts the variant's run, or continues it from its newest checkpoint (a run stopped by a signal or
+    killed keeps its checkpoints; the wall time of every part is added up in elapsed_s.txt)."""
     run = os.path.join(args.root, plan.name, "run")
-    shutil.rmtree(run, ignore_errors=True)
-    os.makedirs(run)
-    with open(os.path.join(run, "request.yaml"), "w") as f:
-        yaml.safe_dump(request, f, sort_keys=False)
-    out = open(os.path.join(run, "stdout.txt"), "w")
+    checkpoint = newest_checkpoint(run, request)
     command = shlex.split(args.mpirun) + ["-np", str(args.ranks), args.parcelflow, "run", case, "--output", run,
                                           "--end", str(args.end)]
+    if checkpoint:
+        print(f"{plan.name}: continuing from {checkpoint}", flush=True)
+        command += ["--restart", checkpoint]
+        out = open(os.path.join(run, "stdout.txt"), "a")
+    else:
+        shutil.rmtree(run, ignore_errors=True)
+        os.makedirs(run)
+        with open(os.path.join(run, "request.yaml"), "w") as f:
+            yaml.safe_dump(request, f, sort_keys=False)
+        out = open(os.path.join(run, "stdout.txt"), "w")
     return subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT), time.time(), out
 
 
@@ -413,7 +444,11 @@ def main():
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE")
     p.add_argument("--steps-per-contact", type=float, default=STEPS_PER_CONTACT)
+    p.add_argument("--restitution", type=float, default=RESTITUTION,
+                   help="the beads' restitution, every pair and the walls (default: the script's)")
     args = p.parse_intermixed_args()
+    if not 0 < args.restitution < 1:
+        sys.exit(f"--restitution {args.restitution}: allowed 0 < e < 1")
     args.case = os.path.abspath(args.case)
     args.root = os.path.abspath(args.root)
     names = args.variants or list(DEFAULT_VARIANTS)
@@ -446,7 +481,7 @@ def main():
                  f"{config['mesh']['lengths'][1]:g} m")
     plans = [Plan(n, int(variables["nbeads"]), times["gas_step"], times["dem_step"], int(variables["settle_steps"]),
                   float(variables["width"]), depth, float(variables["height"]), float(variables["fill_top"]),
-                  args.steps_per_contact)
+                  args.steps_per_contact, args.restitution)
              for n in names]
     for plan in plans:
         print(f"{plan.name}: {plan.parcels} parcels of {plan.diameters[0] * 1e3:g} / {plan.diameters[1] * 1e3:g} mm, "
@@ -480,8 +515,11 @@ def main():
             elapsed = time.time() - t0
             print(f"{name}: exit {proc.returncode} after {elapsed:.0f} s", flush=True)
             run = os.path.join(args.root, name, "run")
+            with open(os.path.join(run, "elapsed_parts_s.txt"), "a") as parts:
+                parts.write(f"{elapsed:.1f}\n")
             if proc.returncode == 0:
-                open(os.path.join(run, "elapsed_s.txt"), "w").write(f"{elapsed:.1f}\n")
+                total = sum(float(x) for x in open(os.path.join(run, "elapsed_parts_s.txt")))
+                open(os.path.join(run, "elapsed_s.txt"), "w").write(f"{total:.1f}\n")
             else:
                 failed.append(name)
                 print(f"{name} failed; its output: {os.path.join(run, 'stdout.txt')}", flush=True)

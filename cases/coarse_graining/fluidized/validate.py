@@ -14,7 +14,9 @@ scaling, DEM step). The inlet velocity rises linearly from 0 to HOLD_VELOCITY ov
 A variant that finished before with the same settings is not run again (coarse_graining.py keeps it).
 
 usage: validate.py PARCELFLOW [--runs DIR] [--size smoke|full|periodic|deep] [--ranks N] [--jobs N] [--mpirun CMD]
-                   [--require-pass] [--variants fine VARIANT ...]
+                   [--require-pass] [--restitution E] [--seed N] [--checkpoint-interval T] [--set KEY=VALUE ...]
+                   [--variants fine [VARIANT ...]]
+A fine bed alone (no coarse variant) is run and measured without a table, as a reference for later pairs.
 """
 import argparse
 import csv
@@ -188,14 +190,17 @@ def main():
     p.add_argument("--mpirun", default="mpirun")
     p.add_argument("--jobs", type=int, default=1, help="variants run at the same time (each on --ranks ranks)")
     p.add_argument("--require-pass", action="store_true", help="exit 1 unless every row passes")
+    p.add_argument("--restitution", type=float, help="the beads' restitution (coarse_graining.py --restitution)")
+    p.add_argument("--seed", type=int, help="LIGGGHTS' insertion seed, a prime above 10000 (default: the script's)")
+    p.add_argument("--checkpoint-interval", type=float,
+                   help="simulated seconds between checkpoints; a run stopped or killed continues from its newest")
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="coarse_graining.py --set")
     p.add_argument("--variants", nargs="+", default=list(VARIANTS),
                    help="coarse_graining.py's variants, the fine bed first (e.g. mono_fine mono_np8_linear: beads of "
                         "one size)")
     args = p.parse_args()
     if args.variants[0] not in FINE_VARIANTS:
         p.error(f"--variants {' '.join(args.variants)}: the first must be a fine bed ({' or '.join(FINE_VARIANTS)})")
-    if len(args.variants) < 2:
-        p.error(f"--variants {' '.join(args.variants)}: give at least one coarse variant after the fine bed")
     runs = os.path.abspath(args.runs)
     os.makedirs(runs, exist_ok=True)
     geometry = SIZES[args.size]
@@ -203,9 +208,20 @@ def main():
     command = [sys.executable, os.path.join(GOLDSCHMIDT, "coarse_graining.py"), os.path.abspath(args.parcelflow), runs,
                "--case", bed, "--end", str(geometry["end"]), "--start", str(geometry["window"]),
                "--ranks", str(args.ranks), "--jobs", str(args.jobs), "--mpirun", args.mpirun, *args.variants]
+    if args.restitution is not None:
+        command += ["--restitution", str(args.restitution)]
+    settings = list(args.set)
+    if args.seed is not None:
+        settings.append(f"liggghts.variables.insert_seed={args.seed}")
+    if args.checkpoint_interval is not None:
+        settings.append(f"output.checkpoint_interval={args.checkpoint_interval}")
+    command += [f"--set={setting}" for setting in settings]
     if subprocess.run(command).returncode != 0:
         sys.exit("coarse_graining.py failed (its output is above)")
     measured = {v: measure(os.path.join(runs, v, "run"), geometry) for v in args.variants}
+    if len(measured) == 1:  # a fine reference alone
+        print("\n".join(f"{name:22s} {value:.5g}" for name, value in measured[args.variants[0]].items()))
+        return
     rows = table_rows(measured)
     path = os.path.join(runs, "coarse_graining_fluidized.csv")
     with open(path, "w", newline="") as f:
