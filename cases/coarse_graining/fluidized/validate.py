@@ -26,6 +26,7 @@ import os
 import shutil
 import subprocess
 import sys
+import time
 
 import h5py
 import numpy as np
@@ -45,14 +46,16 @@ QUANTITIES = {
     "u_mf": (0.05, "m/s", "minimum fluidization velocity from the ramp"),
     "dp_over_weight": (0.05, "", "bed pressure drop over the beads' weight per area, window mean"),
     "expansion": (0.05, "", "mean bead height over the window / the settled bed's"),
-    "bubbles_per_slice": (0.15, "", "voids of the void measure per slice and snapshot"),
-    "bubble_width_mm": (0.15, "mm", "mean width of those voids"),
+    "void_share": (0.15, "", "share of the bed's cells in voids, voids that span the box included (slices)"),
+    "dp_rms_over_weight": (0.15, "", "rms of the bed pressure drop about its window mean, over the weight per area"),
+    "height_rms_mm": (0.15, "mm", "rms of the beads' mean height about its window mean"),
 }
-# Printed beside the table, without a tolerance: where the expansion sits (in voids or in a looser emulsion) and
-# how much the solids move at the bubbles' scale.
+# Printed beside the table, without a tolerance: the voids counted one by one (a void that spans the box is not
+# counted, so in a narrow box most of them drop out), where the expansion sits and how much the solids move.
 DIAGNOSTICS = {
-    "void_share": "share of the bed's cells in voids (layers included), slices, window mean",
-    "emulsion_gas_fraction": "mean gas fraction of the bed's other cells",
+    "bubbles_per_slice": "voids of the void measure per slice and snapshot (box-spanning ones dropped)",
+    "bubble_width_mm": "mean width of those voids [mm]",
+    "emulsion_gas_fraction": "mean gas fraction of the bed's cells outside voids",
     "solids_motion_z_cm2s2": "vertical box-velocity variance of the solids (mesoscale.py --slices, 3 x 3 cells)",
 }
 
@@ -152,11 +155,49 @@ def measure(run, geometry):
     return {"u_mf": packed_branch_umf(velocity[ramp], column["bed_pressure_drop"][ramp], plateau),
             "dp_over_weight": plateau / column["bed_weight_per_area"][window].mean(),
             "expansion": height[window].mean() / height[0],
+            "dp_rms_over_weight": column["bed_pressure_drop"][window].std() / column["bed_weight_per_area"][window].mean(),
+            "height_rms_mm": 1000 * height[window].std(),
             "bubbles_per_slice": float(np.mean(counts)) if counts else math.nan,
             "bubble_width_mm": 1000 * float(np.mean(widths)) if widths else math.nan,
             "void_share": float(np.mean([h[0] for h in holdups])) if holdups else math.nan,
             "emulsion_gas_fraction": float(np.nanmean([h[1] for h in holdups])) if holdups else math.nan,
             "solids_motion_z_cm2s2": 1e4 * float(np.mean(motion)) if motion else math.nan}
+
+
+RECORD_KEY = ("size", "restitution", "seed", "settings", "variant")
+
+
+def binary_commit(parcelflow):
+    """The commit a binary was built from: the suffix of a copied binary (parcelflow-<commit>), else the build's
+    source tree's HEAD."""
+    name = os.path.basename(parcelflow)
+    if name.startswith("parcelflow-"):
+        return name[len("parcelflow-"):]
+    source = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(parcelflow))))
+    head = subprocess.run(["git", "-C", source, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+    return head.stdout.strip() or "unknown"
+
+
+def record(args, runs, measured, settings):
+    """One row per variant in the run record args.record, replacing a row of the same bed, seed and variant."""
+    beds = {r["variant"]: r for r in csv.DictReader(open(os.path.join(runs, "coarse_graining.csv")))}
+    rows = []
+    for variant, values in measured.items():
+        bed = beds[variant]
+        rows.append({"date": time.strftime("%Y-%m-%d", time.gmtime()), "commit": binary_commit(args.parcelflow),
+                     "size": args.size, "restitution": args.restitution or 0.97, "seed": args.seed or "script",
+                     "settings": " ".join(s for s in settings if "insert_seed" not in s and "checkpoint" not in s),
+                     "variant": variant, "ranks": args.ranks, "parcels": bed["parcels"],
+                     "wall_s": bed["total_wall_s"], **{k: f"{v:.6g}" for k, v in values.items()}})
+    old = list(csv.DictReader(open(args.record))) if os.path.exists(args.record) else []
+    new_keys = {tuple(str(r[k]) for k in RECORD_KEY) for r in rows}
+    kept = [r for r in old if tuple(r[k] for k in RECORD_KEY) not in new_keys]
+    os.makedirs(os.path.dirname(os.path.abspath(args.record)), exist_ok=True)
+    with open(args.record, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(kept + rows)
+    print(f"recorded {len(rows)} run(s) in {args.record}")
 
 
 def relative_difference(coarse, fine):
@@ -195,6 +236,8 @@ def main():
     p.add_argument("--checkpoint-interval", type=float,
                    help="simulated seconds between checkpoints; a run stopped or killed continues from its newest")
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="coarse_graining.py --set")
+    p.add_argument("--record", metavar="CSV", help="adds (or replaces) one row per variant in this run record, "
+                   "e.g. cases/coarse_graining/fluidized/records/runs.csv; report.py draws the tables from it")
     p.add_argument("--variants", nargs="+", default=list(VARIANTS),
                    help="coarse_graining.py's variants, the fine bed first (e.g. mono_fine mono_np8_linear: beads of "
                         "one size)")
@@ -219,6 +262,8 @@ def main():
     if subprocess.run(command).returncode != 0:
         sys.exit("coarse_graining.py failed (its output is above)")
     measured = {v: measure(os.path.join(runs, v, "run"), geometry) for v in args.variants}
+    if args.record:
+        record(args, runs, measured, settings)
     if len(measured) == 1:  # a fine reference alone
         print("\n".join(f"{name:22s} {value:.5g}" for name, value in measured[args.variants[0]].items()))
         return

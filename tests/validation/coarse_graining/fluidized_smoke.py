@@ -3,12 +3,14 @@
 20 mm bed of 800 beads, 0.3 s per variant, about 1.5 min on 1 core). The physics of so small a bed means
 nothing; the test checks that
   * the driver ran the fine bed and the three coarse variants and wrote the table with every row (3 variants
-    x 5 quantities), the fine bed's U_mf, dp/(W/A) and expansion numbers, and the diagnostics (void share,
-    emulsion gas fraction, the solids' motion) for every variant;
+    x 6 quantities), the fine bed's U_mf, dp/(W/A), expansion, void share and rms numbers, and the diagnostics
+    (voids counted, their width, emulsion gas fraction, the solids' motion) for every variant;
+  * --record wrote one row per variant into a run record, a second call with the fine bed alone (finished, not
+    run again) replaced its row instead of adding one, and report.py drew the bed's table from the record;
   * each coarse run had its parcels (np 8, np 27, 5 mm parcels of both classes) and the fine bed's solid mass
     to within one of its largest parcels;
   * the inlet ramped (the bed's case.yaml has the ramp) and the fine bed's pressure drop rose with it;
-  * variants without a coarse one, or not starting with a fine bed, are refused before any run (exit 2);
+  * variants not starting with a fine bed are refused before any run (exit 2);
   * the temporary folder is removed and nothing is left in the working folder.
 
 usage: fluidized_smoke.py PARCELFLOW MPIEXEC... -np N
@@ -29,8 +31,9 @@ from parcelflow_runs import CASES, expect_nothing_left, fail, run  # noqa: E402
 DRIVER = os.path.join(CASES, "coarse_graining", "fluidized", "validate.py")
 PARCELS = {"fine": (1, 1, 1.5, 2.5), "np8_linear": (8, 8, 3.0, 5.0), "np27_linear": (27, 27, 4.5, 7.5),
            "d5mm_linear": (37.04, 8, 5.0, 5.0)}  # np small, np large, D small, D large [mm]
-QUANTITIES = ("u_mf", "dp_over_weight", "expansion", "bubbles_per_slice", "bubble_width_mm")
-DIAGNOSTICS = ("void_share", "emulsion_gas_fraction", "solids_motion_z_cm2s2")
+QUANTITIES = ("u_mf", "dp_over_weight", "expansion", "void_share", "dp_rms_over_weight", "height_rms_mm")
+DIAGNOSTICS = ("bubbles_per_slice", "emulsion_gas_fraction", "solids_motion_z_cm2s2")
+REPORT = os.path.join(CASES, "coarse_graining", "fluidized", "report.py")
 
 
 def main():
@@ -40,8 +43,9 @@ def main():
     here_before = set(os.listdir("."))
     with tempfile.TemporaryDirectory(prefix="pf_cg_fluidized_") as work:
         check_refused(parcelflow, work)
+        record = os.path.join(work, "record", "runs.csv")
         stdout = run([sys.executable, DRIVER, parcelflow, "--size", "smoke", "--runs", work, "--ranks", ranks,
-                      "--mpirun", shlex.join(mpirun)], timeout=900)
+                      "--mpirun", shlex.join(mpirun), "--record", record], timeout=900)
         print(stdout)
         if "table written" not in stdout:
             fail("validate.py wrote no table")
@@ -49,13 +53,14 @@ def main():
         check_diagnostics(stdout)
         check_beds(os.path.join(work, "coarse_graining.csv"))
         check_ramp(work)
+        check_record(parcelflow, work, ranks, mpirun, record)
     expect_nothing_left(work, here_before)
     print("PASS")
 
 
 def check_refused(parcelflow, work):
     """Variants that cannot make a table are refused with exit 2, naming the key, before any run."""
-    for variants, what in ((["fine"], "at least one coarse variant"), (["np8_linear", "fine"], "must be a fine bed")):
+    for variants, what in ((["np8_linear", "fine"], "must be a fine bed"),):
         runs = os.path.join(work, "refused")
         result = subprocess.run([sys.executable, DRIVER, parcelflow, "--size", "smoke", "--runs", runs,
                                  "--variants", *variants], capture_output=True, text=True, timeout=60)
@@ -64,6 +69,25 @@ def check_refused(parcelflow, work):
                  f"expected exit 2 naming --variants and '{what}'")
         if os.path.exists(runs):
             fail(f"--variants {' '.join(variants)}: refused, but made {runs}")
+
+
+def check_record(parcelflow, work, ranks, mpirun, record):
+    """A row per variant; the fine bed alone measured again replaces its row; report.py draws the table."""
+    rows = list(csv.DictReader(open(record)))
+    if sorted(r["variant"] for r in rows) != sorted(PARCELS):
+        fail(f"record: variants {[r['variant'] for r in rows]}, expected {sorted(PARCELS)}")
+    stdout = run([sys.executable, DRIVER, parcelflow, "--size", "smoke", "--runs", work, "--ranks", ranks,
+                  "--mpirun", shlex.join(mpirun), "--record", record, "--variants", "fine"], timeout=300)
+    if "fine: finished before, not run again" not in stdout or "expansion" not in stdout:
+        fail(f"the fine bed alone: expected it measured without a new run, got:\n{stdout}")
+    again = list(csv.DictReader(open(record)))
+    if len(again) != len(rows):
+        fail(f"record: {len(again)} rows after measuring the fine bed again, expected {len(rows)}")
+    table = run([sys.executable, REPORT, record], timeout=60)
+    print(table)
+    header = next((line for line in table.splitlines() if line.startswith("| quantity | fine |")), "")
+    if not all(v in header for v in PARCELS if v != "fine") or "| u_mf [m/s] |" not in table:
+        fail(f"report.py: no table with every variant:\n{table}")
 
 
 def check_diagnostics(stdout):
