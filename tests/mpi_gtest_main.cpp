@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "cfd/mpi_io_defaults.hpp"
+#include "cfd/io/mpi_io_defaults.hpp"
 
 int main(int argc, char** argv) {
   parcelflow::cfd::preferRomioForMpiIo();  // as the parcelflow program does

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "cfd/config_error.hpp"
-#include "cfd/internal_error.hpp"
-#include "cfd/mpi_io_defaults.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
+#include "cfd/io/mpi_io_defaults.hpp"
 #include "blowup_guard.h"
 #include "command_line.h"
 #include "contact_time_check.h"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "contact_time.h"
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace LAMMPS_NS { class LAMMPS; }
 

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cfd/config_error.hpp"
-#include "cfd/number_text.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/number_text.hpp"
 #include "contact_time_check.h"
 #include "domain.h"
 #include "lammps.h"

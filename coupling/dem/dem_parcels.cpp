@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "atom.h"
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 #include "fix_parcel.h"
 #include "fix_parcel_implicit_drag.h"
 #include "fix_parcel_reinject.h"

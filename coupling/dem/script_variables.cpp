@@ -9,7 +9,7 @@
 #include <regex>
 #include <set>
 
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -4,8 +4,8 @@
 #include <type_traits>
 #include <utility>
 
-#include "cfd/internal_error.hpp"
-#include "cfd/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling {
 namespace {

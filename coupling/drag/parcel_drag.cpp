@@ -1,5 +1,5 @@
 #include "parcel_drag.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

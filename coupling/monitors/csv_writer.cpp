@@ -7,8 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "cfd/config_error.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

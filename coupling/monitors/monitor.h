@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 #include "dem_parcels.h"
 #include "run_counters.h"
 

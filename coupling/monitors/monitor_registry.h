@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "cfd/gas_settings.hpp"
+#include "cfd/solver/gas_settings.hpp"
 #include "coupling_settings.h"
 #include "monitor.h"
 

@@ -3,8 +3,8 @@
 #include <mpi.h>
 
 #include "broadcast_text.h"
-#include "cfd/config_error.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "cfd/mesh.hpp"
+#include "cfd/mesh/mesh.hpp"
 
 namespace parcelflow::coupling {
 

@@ -8,8 +8,8 @@
 #include <tuple>
 #include <utility>
 
-#include "cfd/hdf5_file.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/io/hdf5_file.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

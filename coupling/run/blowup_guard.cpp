@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "broadcast_text.h"
-#include "cfd/number_text.hpp"
+#include "cfd/base/number_text.hpp"
 
 namespace parcelflow::coupling {
 

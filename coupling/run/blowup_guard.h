@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 #include "coupling_settings.h"
 
 namespace parcelflow::coupling {

@@ -5,11 +5,11 @@
 #include <fstream>
 #include <optional>
 
-#include "cfd/config_error.hpp"
-#include "cfd/number_text.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/number_text.hpp"
 #include "drag_law.hpp"
-#include "cfd/yaml_duplicate_keys.hpp"
-#include "cfd/yaml_section.hpp"
+#include "cfd/io/yaml_duplicate_keys.hpp"
+#include "cfd/io/yaml_section.hpp"
 
 namespace parcelflow::coupling {
 

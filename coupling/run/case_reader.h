@@ -6,7 +6,7 @@
 #include <string>
 
 #include "coupling_settings.h"
-#include "cfd/gas_config.hpp"
+#include "cfd/solver/gas_config.hpp"
 
 namespace parcelflow::coupling {
 

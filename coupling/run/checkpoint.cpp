@@ -11,9 +11,9 @@
 #include <random>
 
 #include "broadcast_text.h"
-#include "cfd/config_error.hpp"
-#include "cfd/hdf5_file.hpp"
-#include "cfd/number_text.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/io/hdf5_file.hpp"
+#include "cfd/base/number_text.hpp"
 
 namespace parcelflow::coupling {
 

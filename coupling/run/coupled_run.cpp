@@ -7,14 +7,14 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cfd/config_error.hpp"
-#include "cfd/diffusion_smoother.hpp"
-#include "cfd/excess_solids_spill.hpp"
-#include "cfd/field_writer.hpp"
-#include "cfd/gas_checkpoint.hpp"
-#include "cfd/gas_solver.hpp"
-#include "cfd/hdf5_file.hpp"
-#include "cfd/planes_near_cell_faces.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/fv/diffusion_smoother.hpp"
+#include "cfd/fv/excess_solids_spill.hpp"
+#include "cfd/output/field_writer.hpp"
+#include "cfd/output/gas_checkpoint.hpp"
+#include "cfd/solver/gas_solver.hpp"
+#include "cfd/io/hdf5_file.hpp"
+#include "cfd/mesh/planes_near_cell_faces.hpp"
 #include "blowup_guard.h"
 #include "case_reader.h"
 #include "checkpoint.h"
@@ -33,7 +33,7 @@
 #include "run_counters.h"
 #include "run_warnings.h"
 #include "side_walls.h"
-#include "cfd/number_text.hpp"
+#include "cfd/base/number_text.hpp"
 #include "stop_signal.h"
 #include "time_averages.h"
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cell_owner_map.h"
-#include "cfd/mesh.hpp"
+#include "cfd/mesh/mesh.hpp"
 #include "parcel_mesh_coupler.h"
 
 namespace parcelflow::coupling {

@@ -3,10 +3,10 @@
 #include <filesystem>
 
 #include "broadcast_text.h"
-#include "cfd/cartesian_background.hpp"
-#include "cfd/config_error.hpp"
-#include "cfd/stl_writer.hpp"
-#include "cfd/surface_from_geometry.hpp"
+#include "cfd/geometry/cartesian_background.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/geometry/stl_writer.hpp"
+#include "cfd/geometry/surface_from_geometry.hpp"
 
 namespace parcelflow::coupling {
 

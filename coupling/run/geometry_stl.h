@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "cfd/gas_settings.hpp"
+#include "cfd/solver/gas_settings.hpp"
 
 namespace parcelflow::coupling {
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "broadcast_text.h"
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling {
 

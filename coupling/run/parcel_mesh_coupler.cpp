@@ -6,7 +6,7 @@
 #include <limits>
 #include <variant>
 
-#include "cfd/internal_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "cfd/number_text.hpp"
+#include "cfd/base/number_text.hpp"
 
 namespace parcelflow::coupling {
 

@@ -12,7 +12,7 @@
 
 #include <string>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 #include "cell_owner_map.h"
 #include "parcel_mesh_coupler.h"
 #include "parcel_size_report.h"

@@ -7,8 +7,8 @@
 #include <array>
 #include <vector>
 
-#include "cfd/gas_settings.hpp"
-#include "cfd/mesh.hpp"
+#include "cfd/solver/gas_settings.hpp"
+#include "cfd/mesh/mesh.hpp"
 
 namespace parcelflow::coupling {
 

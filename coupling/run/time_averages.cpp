@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "cfd/config_error.hpp"
-#include "cfd/hdf5_file.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/io/hdf5_file.hpp"
 
 namespace parcelflow::coupling {
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "cfd/field_writer.hpp"
-#include "cfd/gas_solver.hpp"
+#include "cfd/output/field_writer.hpp"
+#include "cfd/solver/gas_solver.hpp"
 #include "plane_averages.h"
 
 namespace parcelflow::coupling {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "cfd/internal_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -11,7 +11,7 @@
 #include <map>
 #include <string>
 
-#include "cfd/triangle_surface.hpp"
+#include "cfd/geometry/triangle_surface.hpp"
 
 namespace parcelflow::cfd::test {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 
 using namespace parcelflow::cfd;
 

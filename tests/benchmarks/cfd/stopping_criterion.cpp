@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <string>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 
 using namespace parcelflow::cfd;
 

@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "cfd/solid_surface.hpp"
+#include "cfd/geometry/solid_surface.hpp"
 #include "cut_cell_test_surfaces.hpp"
 #include "gas_case.hpp"
 

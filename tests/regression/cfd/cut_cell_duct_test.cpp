@@ -19,7 +19,7 @@
 
 #include <unistd.h>
 
-#include "cfd/gas_config.hpp"
+#include "cfd/solver/gas_config.hpp"
 #include "cut_cell_test_surfaces.hpp"
 #include "gas_case.hpp"
 

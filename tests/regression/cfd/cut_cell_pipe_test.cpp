@@ -9,7 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cfd/surface_from_geometry.hpp"
+#include "cfd/geometry/surface_from_geometry.hpp"
 #include "gas_case.hpp"
 
 using namespace parcelflow::cfd;

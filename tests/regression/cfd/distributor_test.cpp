@@ -14,7 +14,7 @@
 #include <limits>
 #include <string>
 
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 #include "gas_case.hpp"
 
 using namespace parcelflow::cfd;

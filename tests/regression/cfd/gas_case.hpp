@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 
 namespace parcelflow::cfd::testing {
 

@@ -12,11 +12,11 @@
 #include <cstdio>
 #include <string>
 
-#include "cfd/config_error.hpp"
-#include "cfd/gas_config.hpp"
-#include "cfd/hypre_library.hpp"
-#include "cfd/internal_error.hpp"
-#include "cfd/krylov_solver.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/solver/gas_config.hpp"
+#include "cfd/linear/hypre_library.hpp"
+#include "cfd/base/internal_error.hpp"
+#include "cfd/linear/krylov_solver.hpp"
 #include "pressure_problem.hpp"
 
 using namespace parcelflow::cfd;

@@ -1,7 +1,7 @@
 #pragma once
 // The test column of the mesh tests: R 0.1 m up to 0.4 m, a narrower exit tube (R 0.04 m) up to 0.5 m, and a
 // baffle cut out with its own wall patch.
-#include "cfd/geometry.hpp"
+#include "cfd/geometry/geometry.hpp"
 
 namespace parcelflow::cfd::test {
 

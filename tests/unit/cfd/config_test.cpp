@@ -9,12 +9,12 @@
 #include <fstream>
 #include <string>
 
-#include "cfd/config_error.hpp"
-#include "cfd/gas_config.hpp"
-#include "cfd/gas_solver.hpp"
-#include "cfd/internal_error.hpp"
-#include "cfd/yaml_duplicate_keys.hpp"
-#include "cfd/yaml_section.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/solver/gas_config.hpp"
+#include "cfd/solver/gas_solver.hpp"
+#include "cfd/base/internal_error.hpp"
+#include "cfd/io/yaml_duplicate_keys.hpp"
+#include "cfd/io/yaml_section.hpp"
 
 using namespace parcelflow::cfd;
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cfd/cut_cell_geometry.hpp"
-#include "cfd/surface_from_geometry.hpp"
+#include "cfd/geometry/cut_cell_geometry.hpp"
+#include "cfd/geometry/surface_from_geometry.hpp"
 
 using namespace parcelflow::cfd;
 

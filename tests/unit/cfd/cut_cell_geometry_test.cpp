@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <string>
 
-#include "cfd/config_error.hpp"
-#include "cfd/cut_cell_geometry.hpp"
-#include "cfd/stl_reader.hpp"
-#include "cfd/surface_from_geometry.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/geometry/cut_cell_geometry.hpp"
+#include "cfd/geometry/stl_reader.hpp"
+#include "cfd/geometry/surface_from_geometry.hpp"
 #include "cut_cell_test_surfaces.hpp"
 
 using namespace parcelflow::cfd;

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "cfd/config_error.hpp"
-#include "cfd/cut_cell_geometry.hpp"
-#include "cfd/gas_config.hpp"
-#include "cfd/stl_reader.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/geometry/cut_cell_geometry.hpp"
+#include "cfd/solver/gas_config.hpp"
+#include "cfd/geometry/stl_reader.hpp"
 #include "cut_cell_test_surfaces.hpp"
 
 using namespace parcelflow::cfd;

@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cfd/cell_groups.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "cfd/mesh/cell_groups.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 #include "tests/unit/cfd/column_geometry.hpp"
-#include "cfd/surface_from_geometry.hpp"
+#include "cfd/geometry/surface_from_geometry.hpp"
 
 using namespace parcelflow::cfd;
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "cfd/excess_solids_spill.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "cfd/fv/excess_solids_spill.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 #include "tests/unit/cfd/same_on_rank_zero_alone.hpp"
 
 using namespace parcelflow::cfd;

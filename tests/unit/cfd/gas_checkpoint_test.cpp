@@ -14,9 +14,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "cfd/config_error.hpp"
-#include "cfd/gas_checkpoint.hpp"
-#include "cfd/gas_config.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/output/gas_checkpoint.hpp"
+#include "cfd/solver/gas_config.hpp"
 
 using namespace parcelflow::cfd;
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "cfd/mesh_builder.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 #include "tests/unit/cfd/column_geometry.hpp"
 
 using namespace parcelflow::cfd;

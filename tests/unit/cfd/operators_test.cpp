@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "cfd/fvc.hpp"
-#include "cfd/fvm.hpp"
-#include "cfd/krylov_solver.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "cfd/fv/fvc.hpp"
+#include "cfd/fv/fvm.hpp"
+#include "cfd/linear/krylov_solver.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 
 using namespace parcelflow::cfd;
 

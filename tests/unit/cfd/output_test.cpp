@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "cfd/field_writer.hpp"
-#include "cfd/gas_solver.hpp"
+#include "cfd/output/field_writer.hpp"
+#include "cfd/solver/gas_solver.hpp"
 
 using namespace parcelflow::cfd;
 

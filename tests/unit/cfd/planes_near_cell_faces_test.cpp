@@ -3,7 +3,7 @@
 // small_cell_fraction of a cell it is not; a box's planes along every axis are checked.
 #include <gtest/gtest.h>
 
-#include "cfd/planes_near_cell_faces.hpp"
+#include "cfd/mesh/planes_near_cell_faces.hpp"
 
 using namespace parcelflow::cfd;
 

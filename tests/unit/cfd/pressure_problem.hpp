@@ -8,9 +8,9 @@
 
 #include <cmath>
 
-#include "cfd/fvm.hpp"
-#include "cfd/ldu_matrix.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "cfd/fv/fvm.hpp"
+#include "cfd/linear/ldu_matrix.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 
 namespace parcelflow::cfd {
 

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "cfd/config_error.hpp"
-#include "cfd/gas_config.hpp"
-#include "cfd/krylov_solver.hpp"
-#include "cfd/reused_preconditioner.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/solver/gas_config.hpp"
+#include "cfd/linear/krylov_solver.hpp"
+#include "cfd/linear/reused_preconditioner.hpp"
 #include "pressure_problem.hpp"
 
 using namespace parcelflow::cfd;

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "cfd/mesh.hpp"
+#include "cfd/mesh/mesh.hpp"
 
 namespace parcelflow::cfd::test {
 

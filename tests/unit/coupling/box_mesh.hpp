@@ -3,7 +3,7 @@
 // rank of MPI_COMM_WORLD.
 #include <mpi.h>
 
-#include "cfd/mesh_builder.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 
 namespace parcelflow::coupling::test {
 

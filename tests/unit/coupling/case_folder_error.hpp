@@ -8,7 +8,7 @@
 #include <string>
 
 #include "case_reader.h"
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling::test {
 

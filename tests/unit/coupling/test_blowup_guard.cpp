@@ -12,7 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "blowup_guard.h"
-#include "cfd/gas_config.hpp"
+#include "cfd/solver/gas_config.hpp"
 
 using namespace parcelflow;
 

@@ -3,7 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "case_reader.h"
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 #include "tests/unit/coupling/case_folder_error.hpp"
 
 namespace pc = parcelflow::coupling;

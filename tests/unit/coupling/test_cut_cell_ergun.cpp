@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "cfd/gas_solver.hpp"
+#include "cfd/solver/gas_solver.hpp"
 #include "coupler_view.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <random>
 
-#include "cfd/mesh_builder.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 #include "parcel_mesh_coupler.h"
 #include "coupler_view.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"

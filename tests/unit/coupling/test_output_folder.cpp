@@ -10,7 +10,7 @@
 #include <string>
 
 #include "broadcast_text.h"
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 #include "output_folder.h"
 
 namespace pc = parcelflow::coupling;

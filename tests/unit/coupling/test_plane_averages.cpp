@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 #include "tests/unit/coupling/box_mesh.hpp"
 #include "plane_averages.h"
 

@@ -7,8 +7,8 @@
 
 #include "drag_test_context.hpp"
 #include "parcel_drag.hpp"
-#include "cfd/config_error.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 using namespace parcelflow::coupling;
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "cfd/internal_error.hpp"
+#include "cfd/base/internal_error.hpp"
 #include "drag_test_context.hpp"
 #include "parcel_drag.hpp"
 

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <exception>
 
-#include "cfd/field_writer.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "cfd/output/field_writer.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 #include "parcel_writer.h"
 
 using namespace parcelflow;

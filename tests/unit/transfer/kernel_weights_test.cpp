@@ -12,8 +12,8 @@
 #include "ghost_deposition_oracle.hpp"
 #include "test_grid.hpp"
 #include "transfer_kernel.hpp"
-#include "cfd/config_error.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 using namespace parcelflow::coupling;
 using namespace parcelflow::coupling::test;
