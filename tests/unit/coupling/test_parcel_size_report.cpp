@@ -14,11 +14,19 @@ namespace {
 
 bool mentions(const std::string& line, const std::string& what) { return line.find(what) != std::string::npos; }
 
+// Every warning names its rule and the report section that holds the rule's runs.
+const std::string kSection = "(cases/coarse_graining/README.md, \"The rules and their limits\")";
+
+bool namesRuleAndSection(const std::string& line) {
+  return mentions(line, "parcelflow: warning: rule ") && mentions(line, kSection);
+}
+
 // The report without its last line, the bubbling warning that every coarse-grained bed gets (checked here).
 std::vector<std::string> withoutBubbling(std::vector<std::string> lines) {
   EXPECT_FALSE(lines.empty());
   if (lines.empty()) return lines;
-  EXPECT_TRUE(mentions(lines.back(), "bubble less than their particles")) << lines.back();
+  EXPECT_TRUE(mentions(lines.back(), "for the bubbling and expansion of")) << lines.back();
+  EXPECT_TRUE(namesRuleAndSection(lines.back())) << lines.back();
   lines.pop_back();
   return lines;
 }
@@ -37,10 +45,12 @@ TEST(ParcelSizeReport, WarnsForParcelsWiderThanTheKernelAndTooFewAcross) {
   const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 37.04}, kGoldschmidt));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_TRUE(mentions(lines[0], "D = 5 mm")) << lines[0];
-  EXPECT_TRUE(mentions(lines[1], "1.2 times the kernel length")) << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "limit 1")) << lines[1];
-  EXPECT_TRUE(mentions(lines[2], "3 parcels of D = 5 mm across")) << lines[2];
-  EXPECT_TRUE(mentions(lines[2], "limit 6")) << lines[2];
+  EXPECT_TRUE(mentions(lines[1], "rule D / h <= 1 with the gas-fraction floor's excess discarded: here D = 5 mm "
+                                 "over h = 4.15 mm is 1.2")) << lines[1];
+  EXPECT_TRUE(namesRuleAndSection(lines[1])) << lines[1];
+  EXPECT_TRUE(mentions(lines[2], "rule at least 6 parcels across the narrowest extent between walls: here 3 parcels "
+                                 "of D = 5 mm across 15 mm")) << lines[2];
+  EXPECT_TRUE(namesRuleAndSection(lines[2])) << lines[2];
 }
 
 TEST(ParcelSizeReport, AWidenedKernelAndAWideBedAreWithinTheLimits) {
@@ -79,8 +89,10 @@ TEST(ParcelSizeReport, WarnsWhenTheWallLayerTakesMoreThanItsShare) {
   const auto lines = withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025}, bed));
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_TRUE(mentions(lines[0], "wall layer share (D - d) x side-wall area / gas volume = 0.133")) << lines[0];
-  EXPECT_TRUE(mentions(lines[1], "share 0.133 of the bed (limit 0.05)")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "rule wall layer share (D - d) x side-wall area / gas volume <= 0.05: here 0.133"))
+      << lines[1];
   EXPECT_TRUE(mentions(lines[1], "D - d = 2.5 mm")) << lines[1];
+  EXPECT_TRUE(namesRuleAndSection(lines[1])) << lines[1];
   // the same parcels in a 0.3 m bed: share 0.033, only the description
   bed.side_wall_area_per_volume = 4.0 / 0.3;
   bed.narrowest_extent = 0.3;
@@ -105,18 +117,13 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   const pc::ParcelSizes np8{0.005, 8.0, 0.0025, 0.0015, 0.0025};
   const auto lines = withoutBubbling(pc::parcelSizeReport(np8, periodic));
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_TRUE(mentions(lines[1], "particles of 1.5 to 2.5 mm (a size mixture) at up to l = D / dp = 2 (limit 1.5)"))
-      << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "use parcels of at most l = 1.5")) << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "coupling.class_collisions, off in this run, adds")) << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "shear_stress, off here, kept l = 2 mixed in the mean")) << lines[1];
-  periodic.keeps_shear_stress = true;
-  EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport(np8, periodic))[1],
-                       "shear_stress (on) kept l = 2 mixed in the mean"));
-  periodic.keeps_shear_stress = false;
+  EXPECT_TRUE(mentions(lines[1], "rule l = D / dp <= 1.5 for a size mixture whose mixing matters: here l = 2 for "
+                                 "particles of 1.5 to 2.5 mm")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "coupling.class_collisions (off here) restores part")) << lines[1];
+  EXPECT_TRUE(namesRuleAndSection(lines[1])) << lines[1];
   periodic.class_collisions = true;
   EXPECT_TRUE(mentions(withoutBubbling(pc::parcelSizeReport(np8, periodic))[1],
-                       "coupling.class_collisions (on) restores"));
+                       "coupling.class_collisions (on here) restores"));
   periodic.class_collisions = false;
   // np 3.375 (l = 1.5), which remixed as the beads do: within the limit
   EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic)).size(), 1u);
@@ -126,45 +133,50 @@ TEST(ParcelSizeReport, WarnsForACoarseGrainedSizeMixture) {
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0015, 0.0025}, periodic).empty());
 }
 
-TEST(ParcelSizeReport, TellsACoarseGrainedBedOutsideTheMeasuredRangeThatItBubblesLess) {
-  // np 2 (l = 1.26), the smallest l measured, which expanded 9 % less than its beads: warned, naming l
+TEST(ParcelSizeReport, TellsACoarseGrainedBedOutsideTheValidatedBubblingRangeWithoutGuessingTheSign) {
+  // np 2 (l = 1.26), the smallest l measured: beyond the rule l <= 1 without shear_stress
   pc::KernelReach periodic = kGoldschmidt;
   periodic.narrowest_extent = std::numeric_limits<double>::infinity();
   periodic.spills_excess = true;
   const pc::ParcelSizes np2{0.00315, 2.0, 0.00065, 0.0025, 0.0025};
   const auto lines = pc::parcelSizeReport(np2, periodic);
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_TRUE(mentions(lines[1], "parcels of up to l = D / dp = 1.26 bubble less than their particles")) << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "expanded 8-18 % less")) << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "check against a fine run")) << lines[1];
-  EXPECT_TRUE(mentions(lines[1], "shear_stress, off here")) << lines[1];
-  // with shear_stress one size is within the measured range up to l = 2: said, not warned
+  EXPECT_TRUE(mentions(lines[1], "rule l = D / dp <= 1 for the bubbling and expansion of one size: here l = 1.26"))
+      << lines[1];
+  // beds beyond the rule expanded less in some beds and more in others: no sign, no percentage is promised
+  EXPECT_TRUE(mentions(lines[1], "neither the size nor the sign of the difference is known")) << lines[1];
+  EXPECT_FALSE(mentions(lines[1], "%")) << lines[1];
+  EXPECT_TRUE(mentions(lines[1], "shear_stress (off here)")) << lines[1];
+  EXPECT_TRUE(namesRuleAndSection(lines[1])) << lines[1];
+  // with shear_stress one size is within the range up to l = 2: said, not warned, and the voids not promised
   periodic.keeps_shear_stress = true;
   for (const pc::ParcelSizes& oneSize : {np2, pc::ParcelSizes{0.005, 8.0, 0.0025, 0.0025, 0.0025}}) {
     const auto kept = pc::parcelSizeReport(oneSize, periodic);
     ASSERT_EQ(kept.size(), 2u);
     EXPECT_FALSE(mentions(kept[1], "warning")) << kept[1];
-    EXPECT_TRUE(mentions(kept[1], "within the measured range of fix parcel's shear_stress (l <= 2 for one particle "
-                                  "size)")) << kept[1];
-    // the bubbles were not kept there: said with the numbers
-    EXPECT_TRUE(mentions(kept[1], "voids, though, held 0.70-0.85 of the particles' share")) << kept[1];
+    EXPECT_TRUE(mentions(kept[1], "the expansion of one size with fix parcel's shear_stress (l <= 2)")) << kept[1];
+    EXPECT_TRUE(mentions(kept[1], "the voids' share of the bed was not kept there")) << kept[1];
+    EXPECT_TRUE(mentions(kept[1], kSection)) << kept[1];
   }
-  // beyond l = 2 (np 27) it is warned again, saying what shear_stress gave
+  // beyond l = 2 (np 27) it is warned again, naming the rule with shear_stress
   const auto np27 = pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, periodic);
   ASSERT_EQ(np27.size(), 3u);  // with the warning of parcels 1.8 times h (the next test)
-  EXPECT_TRUE(mentions(np27[2], "l = D / dp = 3 bubble less than their particles")) << np27[2];
-  EXPECT_TRUE(mentions(np27[2], "with fix parcel's shear_stress, as here")) << np27[2];
+  EXPECT_TRUE(mentions(np27[2], "rule l = D / dp <= 2 for the bubbling and expansion of one size with fix parcel's "
+                                "shear_stress: here l = 3")) << np27[2];
   EXPECT_FALSE(mentions(np27[2], "off here")) << np27[2];
   // a size mixture at l = 1.26: warned with shear_stress alone, within the range with coupling.class_collisions
   const pc::ParcelSizes mixtureNp2{0.00315, 2.0, 0.00065, 0.0015, 0.0025};
-  EXPECT_TRUE(mentions(pc::parcelSizeReport(mixtureNp2, periodic).back(), "bubble less than their particles"));
+  EXPECT_TRUE(mentions(pc::parcelSizeReport(mixtureNp2, periodic).back(),
+                       "rule l = D / dp <= 1 for the bubbling and expansion of a size mixture with fix parcel's "
+                       "shear_stress: here l = 1.26"));
   periodic.class_collisions = true;
   const auto both = pc::parcelSizeReport(mixtureNp2, periodic);
   ASSERT_EQ(both.size(), 2u);
-  EXPECT_TRUE(mentions(both[1], "(l <= 1.26 for a size mixture with coupling.class_collisions)")) << both[1];
+  EXPECT_TRUE(mentions(both[1], "a size mixture with fix parcel's shear_stress and coupling.class_collisions "
+                                "(l <= 1.26)")) << both[1];
   // and warned at l = 1.5 with both
   EXPECT_TRUE(mentions(pc::parcelSizeReport({0.00375, 3.375, 0.00125, 0.0015, 0.0025}, periodic).back(),
-                       "l = D / dp = 1.5 bubble less than their particles"));
+                       "coupling.class_collisions: here l = 1.5"));
   // single particles: no report, so no warning
   EXPECT_TRUE(pc::parcelSizeReport({0.0025, 1.0, 0.0, 0.0025, 0.0025}, periodic).empty());
 }
@@ -176,14 +188,14 @@ TEST(ParcelSizeReport, WarnsForParcelsFarWiderThanTheKernelEvenWithTheExcessSpil
   EXPECT_EQ(withoutBubbling(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, box)).size(), 2u);  // + mixture
   const auto np27 = withoutBubbling(pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, box));
   ASSERT_EQ(np27.size(), 2u);
-  EXPECT_TRUE(mentions(np27[1], "D = 7.5 mm are 2.4 times the kernel length h = 3.125 mm (limit 1.6 once the "
-                                "gas-fraction floor drops no solids)")) << np27[1];
-  EXPECT_TRUE(mentions(np27[1], "U_mf rose 12.3 %")) << np27[1];
+  EXPECT_TRUE(mentions(np27[1], "rule D / h <= 1.6: here D = 7.5 mm over h = 3.125 mm is 2.4")) << np27[1];
+  EXPECT_TRUE(namesRuleAndSection(np27[1])) << np27[1];
+  EXPECT_FALSE(mentions(np27[1], "%")) << np27[1];  // the rule, not one box's percentages
   // without spill the floor's warning (limit 1) says it instead, once
   box.spills_excess = false;
   const auto unspilled = withoutBubbling(pc::parcelSizeReport({0.0075, 27.0, 0.005, 0.0025, 0.0025}, box));
   ASSERT_EQ(unspilled.size(), 2u);
-  EXPECT_TRUE(mentions(unspilled[1], "(limit 1)")) << unspilled[1];
+  EXPECT_TRUE(mentions(unspilled[1], "rule D / h <= 1 with the gas-fraction floor's excess discarded")) << unspilled[1];
 }
 
 TEST(ParcelSizeReport, WarnsForOneParcelDiameterOverASizeMixture) {
@@ -199,7 +211,8 @@ TEST(ParcelSizeReport, WarnsForOneParcelDiameterOverASizeMixture) {
   ASSERT_EQ(warned(d5mm), 1) << d5mm.size();
   for (const auto& line : d5mm)
     if (mentions(line, "parcels of one diameter"))
-      EXPECT_TRUE(mentions(line, "D = 5 mm stand for particles of 1.5 to 2.5 mm: they pack as spheres of one size"))
+      EXPECT_TRUE(mentions(line, "rule a size mixture keeps its size ratio (fix parcel mode constant_np): here "
+                                 "parcels of one diameter D = 5 mm stand for particles of 1.5 to 2.5 mm"))
           << line;
   // as np 8 parcels (3 and 5 mm: the mixture's size ratio) and as one size: not told
   EXPECT_EQ(warned(pc::parcelSizeReport({0.005, 8.0, 0.0025, 0.0015, 0.0025}, box)), 0);

@@ -99,7 +99,7 @@ def check_runs(work, case, parcelflow, liggghts):
             fail(f"{case}/{variant}: fix parcel did not report '{expected}'")
         largest = round(LARGEST_DIAMETER * round(n_particles ** (1 / 3)), 6)
         warning = f"fix parcels parcel: parcels up to D = {largest:.4g} m (l = D/dp up to {round(n_particles ** (1 / 3))})"
-        if f"WARNING: {warning}" not in screen or "narrower than 57 D" not in screen:
+        if f"WARNING: {warning}" not in screen or "rule openings at least 57 D" not in screen:
             fail(f"{case}/{variant}: no start-up warning '{warning} ...' of the geometric limits")
         mass = settled_mass(screen, case, variant)
         parcel_mass = n_particles * LARGEST_PARTICLE_MASS

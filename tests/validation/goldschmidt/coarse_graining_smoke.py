@@ -95,8 +95,8 @@ def check_parcel_reports(root):
     for name, (largest, too_few_across) in expected.items():
         text = open(os.path.join(root, name, "run", "stdout.txt"), errors="replace").read()
         described = "parcelflow: coarse graining: largest parcel" in text
-        warned = "across the narrowest extent of the bed between walls" in text and "limit 6" in text
-        mixture = "particles of 1.5 to 2.5 mm (a size mixture)" in text
+        warned = "rule at least 6 parcels across the narrowest extent between walls: here" in text
+        mixture = "for a size mixture whose mixing matters: here" in text and "particles of 1.5 to 2.5 mm" in text
         print(f"[measured] {name}: parcel report {'yes' if described else 'no'}, too-few-across warning "
               f"{'yes' if warned else 'no'}, size-mixture warning {'yes' if mixture else 'no'}")
         if described != (largest is not None) or (largest and f"largest parcel {largest}" not in text):
@@ -110,7 +110,8 @@ def check_parcel_reports(root):
 def check_shear_stress(run_folder):
     text = open(os.path.join(run_folder, "stdout.txt"), errors="replace").read()
     for expected in ("shear_stress: parcel-parcel dampings raised from restitution 0.97 to 0.233238",
-                     "the contacts with wall types 3 keep theirs", "with fix parcel's shear_stress, as here"):
+                     "the contacts with wall types 3 keep theirs",
+                     "for the bubbling and expansion of a size mixture with fix parcel's shear_stress: here l = 2"):
         if expected not in text:
             fail(f"np8_linear_dissipation_l4: '{expected}' is not in its output")
     print("[measured] np8_linear_dissipation_l4: fix parcel's shear_stress 0.97 -> 0.233238, walls kept; warned as on")
