@@ -31,9 +31,9 @@ Variants (atom types 1 and 2 are the small and the large beads in all of them):
   np8_linear_dissipation_l4  np8_linear with 1 - e'^2 = l^4 (1 - e^2) (0.97 -> 0.233): the collisional shear
                stress at one shear rate the beads' (the viscosity goes as d sqrt(temperature), so the shear
                stress as d^2 (shear rate)^2 / sqrt(1 - e^2)); fix parcel's `shear_stress 0.97`
-  np2_linear_dissipation_l4, np3.375_linear_dissipation_l4, mono_np8_linear_dissipation_l4  the same rule
-               (0.97 -> 0.922 at l = 1.26, 0.837 at l = 1.5, 0.233 at l = 2) for np2_linear, np3.375_linear and
-               mono_np8_linear
+  np2_linear_dissipation_l4, np3.375_linear_dissipation_l4, mono_np3.375_linear_dissipation_l4,
+  mono_np8_linear_dissipation_l4  the same rule (0.97 -> 0.922 at l = 1.26, 0.837 at l = 1.5, 0.233 at l = 2) for
+               np2_linear, np3.375_linear, mono_np3.375_linear and mono_np8_linear
   d2.5mm_linear_dissipation_l4  d2.5mm_linear with the same rule per type pair (0.97 -> 0.738 between the
                small beads' parcels, l = 1.67; 0.875 with the large beads' at the pair's l = 1.41; 0.97 between
                the large ones)
@@ -113,7 +113,7 @@ STEPS_PER_CONTACT = 11
 # one size than with the bead mixture (2.5 mm: in the smoke test's third-width bed 3,830 of 3,990 fitted; 2 mm
 # beads: in the fluidized periodic box 7,543 of 7,806).
 INSERTION_ROOM = {"d2.5mm_linear": 1.15, "d2.5mm_linear_dissipation_l4": 1.15, "mono_fine": 1.15,
-                  "mono_np3.375_linear": 1.15}
+                  "mono_np3.375_linear": 1.15, "mono_np3.375_linear_dissipation_l4": 1.15}
 
 # Variants whose parcel-parcel restitution is lowered to 1 - e'^2 = l^k (1 - e^2), by k: k = 1 keeps the fine bed's
 # collisional dissipation per unit mass; k = 2 its collisional pressure at one shear rate, k = 4 its collisional
@@ -123,7 +123,7 @@ KEEP_DISSIPATION = {"np8_linear_dissipation": 1, "np8_linear_dissipation_frictio
 # Variants with k = 4, by fix parcel's keyword `shear_stress` (the beads' restitution; the plugin lowers the
 # parcel-parcel restitution to the same e' from the script's dampings and keeps the walls').
 SHEAR_STRESS = {"np2_linear_dissipation_l4", "np3.375_linear_dissipation_l4", "np8_linear_dissipation_l4",
-                "mono_np8_linear_dissipation_l4", "d2.5mm_linear_dissipation_l4"}
+                "mono_np3.375_linear_dissipation_l4", "mono_np8_linear_dissipation_l4", "d2.5mm_linear_dissipation_l4"}
 # Variants whose parcel-parcel friction is l times the beads': the frictional share of the dissipation too.
 SCALE_FRICTION = {"np8_linear_dissipation_friction"}
 
@@ -172,6 +172,9 @@ VARIANTS = {
                             tuple(1.5 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
     "mono_np8_linear": ("8 of the 2 mm beads per parcel: 4 mm parcels, scaling linear",
                         tuple(2 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
+    "mono_np3.375_linear_dissipation_l4": ("mono_np3.375_linear with parcel-parcel restitution 1 - e'^2 = l^4 "
+                                           "(1 - e^2)", tuple(1.5 * d for d in MONO_BEADS), "constant_np", "linear",
+                                           MONO_BEADS),
     "mono_np8_linear_dissipation_l4": ("mono_np8_linear with parcel-parcel restitution 1 - e'^2 = l^4 (1 - e^2)",
                                        tuple(2 * d for d in MONO_BEADS), "constant_np", "linear", MONO_BEADS),
 }
