@@ -7,6 +7,7 @@ A case folder with results has `records/tables.yaml`: a list of tables, each
       file: shipped_20s.csv          # a CSV under records/ (or a path relative to the case folder)
       columns:                       # optional: which columns, their headers and formats (default: all, as stored)
         - {key: segregation, header: "segregation", format: "{:.3f}"}
+        - {key: [h_small_mm, h_large_mm], header: "small / large [mm]"}   # values joined by " / "
       where: {variant: baseline}     # optional: only the rows with these values
       note: "2 ranks, 2 s windows"   # optional: said after the date and commit
       commit: 85052be                # optional: for rows that carry no `commit` column
@@ -94,23 +95,29 @@ def cell(value, fmt):
         return value
 
 
+def value(row, column):
+    keys = column["key"] if isinstance(column["key"], list) else [column["key"]]
+    return " / ".join(cell(row[k], column.get("format")) for k in keys)
+
+
 def render(case, spec):
     """The table as Markdown lines: header, separator, rows, then the line with the date and commit."""
     rows = read_rows(case, spec)
     columns = spec.get("columns") or [{"key": k} for k in rows[0] if k not in META]
     columns = [c if isinstance(c, dict) else {"key": c} for c in columns]
     for c in columns:
-        if c["key"] not in rows[0]:
-            raise RecordError(f"table '{spec['name']}': column '{c['key']}' not in its record "
-                              f"(has: {', '.join(rows[0])})")
+        for key in c["key"] if isinstance(c["key"], list) else [c["key"]]:
+            if key not in rows[0]:
+                raise RecordError(f"table '{spec['name']}': column '{key}' not in its record "
+                                  f"(has: {', '.join(rows[0])})")
     shared = {key: {r[key] for r in rows} for key in META}
     uniform = all(len(values) == 1 for values in shared.values())
     if not uniform:
         columns = columns + [{"key": "date"}, {"key": "commit"}]
-    lines = ["| " + " | ".join(c.get("header", c["key"]) for c in columns) + " |",
+    lines = ["| " + " | ".join(c.get("header", str(c["key"])) for c in columns) + " |",
              "|" + "---|" * len(columns)]
     for row in rows:
-        lines.append("| " + " | ".join(cell(row[c["key"]], c.get("format")) for c in columns) + " |")
+        lines.append("| " + " | ".join(value(row, c) for c in columns) + " |")
     note = f" ({spec['note']})" if spec.get("note") else ""
     if uniform:
         lines.append("")
