@@ -12,6 +12,7 @@ A case folder with results has `records/tables.yaml`: a list of tables, each
       note: "2 ranks, 2 s windows"   # optional: said after the date and commit
       commit: 85052be                # optional: for rows that carry no `commit` column
       date: 2026-12-06               # optional: for rows that carry no `date` column
+      date_column: recorded          # optional: the record's column that holds the date
       show: false                    # optional: a record kept (superseded or detail) but not shown in the README
       plot: [resolution.py, ...]     # optional: a command (run in the case folder, {out} the plot folder) that
                                      # draws the table's plot from the same records
@@ -77,6 +78,8 @@ def read_rows(case, spec):
     if not rows:
         raise RecordError(f"table '{spec['name']}': no rows in {path} (where {spec.get('where')})")
     for row in rows:
+        if spec.get("date_column"):
+            row["date"] = row.pop(spec["date_column"])
         for key in META:
             if not row.get(key):
                 if key not in spec:
