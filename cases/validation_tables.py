@@ -59,6 +59,11 @@ def load_specs(case):
     if unlisted:
         raise RecordError(f"{path}: records not listed as a table (add them, with show: false if not shown): "
                           f"{unlisted}")
+    for spec in specs:
+        if spec.get("plot") and not os.access(os.path.join(os.path.dirname(os.path.dirname(path)), spec["plot"][0]),
+                                              os.X_OK):
+            raise RecordError(f"{path}: table '{spec['name']}': plot command {spec['plot'][0]} is not an "
+                              f"executable file of the case folder")
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
         raise RecordError(f"{path}: tables named twice: {duplicates}")
