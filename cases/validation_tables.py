@@ -21,6 +21,9 @@ Each row of a record gives the commit and the date it was measured at (columns `
 table's defaults). When every shown row shares them, the table is followed by one line "Measured DATE at commit
 C"; otherwise they are columns of the table.
 
+Exit codes: 0 done, 1 a README table differs from its record (--check), 2 a tables.yaml or record that cannot be
+drawn (the message names the file and the problem).
+
 usage: validation_tables.py CASE_FOLDER            print every table of tables.yaml as Markdown
        validation_tables.py CASE_FOLDER --check    exit 1 if a marked block of README.md differs from it
        validation_tables.py CASE_FOLDER --write    rewrite the marked blocks of README.md
@@ -204,7 +207,8 @@ def main():
         if args.plots:
             plots(case, specs, os.path.abspath(args.plots))
     except RecordError as e:
-        sys.exit(f"validation_tables.py: {e}")
+        print(f"validation_tables.py: {e}", file=sys.stderr)
+        sys.exit(2)
 
 
 if __name__ == "__main__":

@@ -80,12 +80,12 @@ class Command(unittest.TestCase):
     def test_an_unlisted_record_or_a_missing_commit_is_refused_naming_it(self):
         self.write("records/stray.csv", "a,b\n1,2\n")
         result = redraw(self.folder, "--check")
-        self.assertNotEqual(result.returncode, 0)
+        self.assertEqual(result.returncode, 2)
         self.assertIn("stray.csv", result.stderr)
         os.remove(os.path.join(self.folder, "records", "stray.csv"))
         self.write("records/heights.csv", "run,small,large,seg\nfine,48.8,32.0,0.418\n")
         result = redraw(self.folder)
-        self.assertNotEqual(result.returncode, 0)
+        self.assertEqual(result.returncode, 2)
         self.assertIn("has no 'commit'", result.stderr)
 
 
