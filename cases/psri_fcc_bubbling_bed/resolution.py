@@ -19,7 +19,8 @@ an unfinished run from its last checkpoint and skips a finished one, so the set 
 experiment's 3.5 m (RUNS/resolution_profiles.png).
 
 The table and the plot take the variants not finished in RUNS from the record in resolution/ (table.csv and
-profiles.csv, each row with the date it was recorded); `--summary --record` writes the finished runs there, so
+profiles.csv, each row with the date it was recorded and the commit of the checkout the script ran from, which
+should be the binary's); `--summary --record` writes the finished runs there, so
 that a study spread over sessions on machines that do not keep their runs can still be drawn whole.
 
 usage: resolution.py PARCELFLOW RUNS [VARIANT ...] [--ranks N] [--mpirun CMD] [--end T] [--summary [--record]]
@@ -192,7 +193,8 @@ def read_record():
     if os.path.exists(os.path.join(RECORD, "table.csv")):
         with open(os.path.join(RECORD, "table.csv")) as f:
             for row in csv.DictReader(f):
-                table[row["variant"]] = {k: v if k in ("variant", "recorded") else float(v) for k, v in row.items()}
+                table[row["variant"]] = {k: v if k in ("variant", "recorded", "commit") else float(v)
+                                         for k, v in row.items()}
         points = {}
         with open(os.path.join(RECORD, "profiles.csv")) as f:
             for row in csv.DictReader(f):
@@ -201,12 +203,22 @@ def read_record():
     return table, profiles
 
 
+def source_commit():
+    """The commit of the checkout this script is in (the binary is expected to be built from it)."""
+    try:
+        return subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"], capture_output=True, text=True,
+                              check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
 def write_record(table, profiles):
     """RECORD/table.csv and profiles.csv: the finished runs replace their variant's recorded rows."""
     recorded_table, recorded_profiles = read_record()
     today = datetime.date.today().isoformat()
+    commit = source_commit()
     for row in table:
-        recorded_table[row["variant"]] = dict(row, recorded=today)
+        recorded_table[row["variant"]] = dict(row, recorded=today, commit=commit)
         recorded_profiles[row["variant"]] = profiles[row["variant"]]
     os.makedirs(RECORD, exist_ok=True)
     rows = [recorded_table[name] for name in VARIANTS if name in recorded_table]
@@ -231,7 +243,7 @@ def report(args):
         run = os.path.join(args.runs, name, "run")
         if finished(run):
             row, profiles[name] = summarize(name, run)
-            table.append(dict(row, recorded="this run"))
+            table.append(dict(row, recorded="this run", commit=source_commit()))
     if args.record and table:
         write_record([{k: v for k, v in row.items() if k != "recorded"} for row in table], profiles)
     recorded_table, recorded_profiles = read_record()
