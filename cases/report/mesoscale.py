@@ -1,14 +1,14 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """How strongly the bed moves at the scale of its bubbles: the solids' and the gas's box-averaged velocity
-fluctuations from a run's field snapshots (issue 29).
+fluctuations from a run's field snapshots.
 
-usage: mesoscale.py RUN [RUN ...] [--start 10] [--end T] [--box 3] [--slices]
+usage: mesoscale.py RUN [RUN ...] [--start 0] [--end T] [--box 3] [--slices]
 
 Each snapshot (fields_*.h5: gas_fraction, gas_velocity, solids_velocity per cell) is averaged over the depth
 onto the mesh's rows and columns (z, x) (with --slices, for a bed as deep as it is wide: taken on the slices at
 1/4, 1/2 and 3/4 of the depth, each measured alone and the measures averaged), the solids velocity weighted by
 the solids fraction and the gas velocity taken superficial (times the gas fraction), and then summed over boxes
-of BOX x BOX of those cells, counting only the cells inside the bed (void_shape.py's surface). Per snapshot:
+of BOX x BOX of those cells, counting only the cells inside the bed (void_shape.py's surface; a box mesh, x its width, y its depth). Per snapshot:
 - solids: the variance of the boxes' solids velocity about the bed's centre-of-mass velocity, weighted by the
   boxes' solids (x and z), and that centre-of-mass velocity;
 - gas: the variance of the boxes' superficial gas velocity about its mean inside the bed, weighted by the
@@ -97,7 +97,7 @@ def run_measure(folder, start, end, box, slices=False):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("runs", nargs="+", help="run folders (with fields_mesh.h5 and fields_*.h5)")
-    p.add_argument("--start", type=float, default=10.0, help="first snapshot time [s]")
+    p.add_argument("--start", type=float, default=0.0, help="first snapshot time [s]")
     p.add_argument("--end", type=float, default=float("inf"), help="last snapshot time [s]")
     p.add_argument("--box", type=int, default=3, help="box edge in cells")
     p.add_argument("--slices", action="store_true",

@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""The plots and statistics every bed needs, from any parcelflow run's output folder.
+
+usage: report.py OUTPUT [--out DIR] [--start T]
+
+Draws (each only when the run wrote what it needs; README.md here defines every plot and number):
+  pressure_drop.png   bed pressure drop against the buoyant bed weight per area, and their ratio
+  class_heights.png   the mean height of each class or atom type (the mean_z_* monitor columns)
+  solids_fraction.png solids fraction on the vertical mid-depth plane at up to six field snapshots
+  voids.png           the voids' share of the bed's cells and the bubbles per plane, per snapshot
+  averages_profile.png, averages_fields.png   the time averages of monitors.average
+and writes report.txt: the statistics over the window from --start (default: the second half of the run) to
+the end. Exit status 2 for a folder that is not a run's output or a --start outside the run.
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+import figures
+import mesoscale
+import run_output
+import void_shape
+
+MAX_SNAPSHOT_PANELS = 6
+MESOSCALE_BOX = 3  # cells: particle-scale agitation averages out, bubble-scale motion stays
+
+
+def void_rows(mesh, snapshots):
+    """Per snapshot [(time, gas_fraction)]: (time, void share, bubbles per plane, has a layer, [bubble widths],
+    emulsion gas fraction), each the mean over the snapshot's planes (Mesh.void_planes)."""
+    rows = []
+    dx = mesh.spacing[mesh.width_axis]
+    for time, gas_fraction in snapshots:
+        planes = mesh.void_planes(gas_fraction)
+        measures = [void_shape.snapshot_measure(a, dx) for a in planes]
+        holdups = [void_shape.holdup(a) for a in planes]
+        rows.append((time, float(np.mean([h[0] for h in holdups])), float(np.mean([m[1] for m in measures])),
+                     any(m[0] for m in measures), [w for m in measures for w in m[2]],
+                     float(np.nanmean([h[1] for h in holdups])) if any(np.isfinite(h[1]) for h in holdups)
+                     else float("nan")))
+    return rows
+
+
+def void_summary(rows):
+    """{void_share, bubbles_per_plane, bubble_width, layer_share, emulsion_gas_fraction} over rows of void_rows."""
+    widths = [w for r in rows for w in r[4]]
+    emulsion = [r[5] for r in rows if np.isfinite(r[5])]
+    return {"snapshots": len(rows), "void_share": float(np.mean([r[1] for r in rows])),
+            "bubbles_per_plane": float(np.mean([r[2] for r in rows])),
+            "bubble_width": float(np.mean(widths)) if widths else float("nan"),
+            "layer_share": float(np.mean([r[3] for r in rows])),
+            "emulsion_gas_fraction": float(np.mean(emulsion)) if emulsion else float("nan")}
+
+
+def mesoscale_summary(mesh, snapshots_in_window):
+    """mesoscale.py's measure over the window's snapshots [(time, path)] (None on a mesh of cut cells or without
+    the velocity fields): solids' box-velocity variance x, z and the gas's, on the planes the voids use."""
+    if not mesh.box or not snapshots_in_window:
+        return None
+    centres = mesh.width_first(mesh.centres)
+    rows = []
+    for _, path in snapshots_in_window:
+        fields = [run_output.read_field(path, k) for k in ("gas_fraction", "gas_velocity", "solids_velocity")]
+        if any(f is None for f in fields):
+            return None
+        rows.append(mesoscale.snapshot(fields[0], mesh.width_first(fields[1]), mesh.width_first(fields[2]), centres,
+                                       MESOSCALE_BOX, slices=not mesh.thin()))
+    r = np.array(rows)
+    return {"solids_var_x": r[:, 0].mean(), "solids_var_z": r[:, 1].mean(), "gas_var_x": r[:, 4].mean(),
+            "gas_var_z": r[:, 5].mean()}
+
+
+def window_start(monitors, start):
+    """The first time of the statistics window: start, or half the run's last monitor time."""
+    end = monitors["time"][-1]
+    if start is None:
+        return 0.5 * end
+    if not 0 <= start < end:
+        raise run_output.NotARun(f"--start {start:g}: must lie in [0, {end:g}) s, the run's monitored times")
+    return start
+
+
+def make(folder, out=None, start=None, title=""):
+    """Draws the report of the run in folder into out (default: folder/report) and returns
+    {"lines": summary lines, "written": [paths], "start": window start, "monitors", "mesh", "snapshots":
+    [(time, path)], "voids": void_summary or None, "void_rows"}."""
+    monitors = run_output.read_monitors(folder)
+    start = window_start(monitors, start)
+    out = out or os.path.join(folder, "report")
+    os.makedirs(out, exist_ok=True)
+    t = monitors["time"]
+    window = t >= start - 1e-12
+    prefix = f"{title}: " if title else ""
+    lines = [f"{prefix}{folder}: monitors {t[0]:g}-{t[-1]:g} s ({len(t)} rows); statistics over "
+             f"{t[window][0]:g}-{t[-1]:g} s"]
+    written = []
+    if "bed_pressure_drop" in monitors and "bed_weight_per_area" in monitors:
+        dp, weight = monitors["bed_pressure_drop"][window], monitors["bed_weight_per_area"][window]
+        lines.append(f"bed pressure drop {dp.mean():.4g} Pa, weight per area {weight.mean():.4g} Pa: "
+                     f"dp/(W/A) {dp.mean() / weight.mean():.3f}, rms {dp.std() / weight.mean():.3f}")
+        written.append(figures.pressure_drop(monitors, start, out, title=title))
+    heights = run_output.height_columns(monitors)
+    if heights:
+        lines.append("mean height [mm] (mean, rms): " + ", ".join(
+            f"{k} {1000 * np.nanmean(monitors[k][window]):.2f}, {1000 * np.nanstd(monitors[k][window]):.2f}"
+            for k in heights))
+        written.append(figures.class_heights(monitors, heights, start, out, title=title))
+    snapshots = run_output.series(folder, "fields")
+    result = {"lines": lines, "written": written, "start": start, "monitors": monitors, "mesh": None,
+              "snapshots": snapshots, "voids": None, "void_rows": []}
+    if snapshots:
+        mesh = result["mesh"] = run_output.Mesh(os.path.join(folder, "fields_mesh.h5"))
+        picked = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1,
+                                                         min(MAX_SNAPSHOT_PANELS, len(snapshots)))]
+        written.append(figures.solids_planes(mesh, [(time, run_output.read_field(path, "gas_fraction"))
+                                                    for time, path in picked], out, title=title))
+        rows = result["void_rows"] = void_rows(mesh, [(time, run_output.read_field(path, "gas_fraction"))
+                                                      for time, path in snapshots])
+        in_window = [r for r in rows if r[0] >= start - 1e-12]
+        written.append(figures.voids(rows, start, out, title=title))
+        planes = "the depth average" if mesh.thin() else "slices at 1/4, 1/2, 3/4 of the depth"
+        if in_window:
+            v = result["voids"] = void_summary(in_window)
+            lines.append(f"voids on {planes}, {v['snapshots']} snapshots: void share {v['void_share']:.3f}, "
+                         f"{v['bubbles_per_plane']:.2f} bubbles per plane, mean width "
+                         f"{1000 * v['bubble_width']:.1f} mm, a bed-wide layer in {100 * v['layer_share']:.0f} % "
+                         f"of the snapshots, emulsion gas fraction {v['emulsion_gas_fraction']:.3f}")
+        else:
+            lines.append("voids: no field snapshot in the window")
+        motion = mesoscale_summary(mesh, [s for s in snapshots if s[0] >= start - 1e-12])
+        if motion:
+            lines.append(f"mesoscale motion (boxes of {MESOSCALE_BOX} x {MESOSCALE_BOX} cells, {planes}): solids "
+                         f"box-velocity variance x {1e4 * motion['solids_var_x']:.2f}, z "
+                         f"{1e4 * motion['solids_var_z']:.2f} cm2/s2; gas x {1e4 * motion['gas_var_x']:.1f}, z "
+                         f"{1e4 * motion['gas_var_z']:.1f} cm2/s2")
+    averages = run_output.read_averages_csv(folder)
+    if averages and {"z", "mean_pressure", "interval_mid_z", "dp_over_g_dz"} <= set(averages[1]):
+        lines.append(averages[0].lstrip("# "))
+        written.append(figures.averaged_profile(*averages, out))
+    averaged = run_output.series(folder, "averages")
+    if averaged:
+        time, path = averaged[-1]
+        mesh = run_output.Mesh(os.path.join(folder, "averages_mesh.h5"))
+        fields = {k: run_output.read_field(path, k) for k in ("mean_solids_fraction", "mean_gas_speed",
+                                                               "mean_solids_speed")}
+        written.append(figures.averaged_fields(mesh, {k: v for k, v in fields.items() if v is not None}, time, out))
+    with open(os.path.join(out, "report.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    written.append(os.path.join(out, "report.txt"))
+    return result
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("output", help="a run's output folder (monitors.csv, fields_*.h5, ...)")
+    p.add_argument("--out", help="where the PNGs and report.txt go (default: OUTPUT/report)")
+    p.add_argument("--start", type=float, help="first time of the statistics window [s] (default: half the run)")
+    args = p.parse_args(argv)
+    try:
+        result = make(args.output, args.out, args.start)
+    except run_output.NotARun as e:
+        print(f"report.py: {e}", file=sys.stderr)
+        return 2
+    print("\n".join(result["lines"]))
+    for path in result["written"]:
+        print(f"written: {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
