@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Unit test of cases/goldschmidt_segregation/void_shape.py (issue 14) on synthetic fields with known bubbles
+"""Unit test of cases/report/void_shape.py on synthetic fields with known bubbles
 and layers: a 47 x 94 cell bed (the Goldschmidt mesh) of solids fraction 0.6 up to row 30 under a gas-only
 freeboard, with voids carved into it."""
 import os
@@ -8,8 +8,7 @@ import unittest
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases",
-                                "goldschmidt_segregation"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases", "report"))
 import void_shape  # noqa: E402
 
 NX, NZ, DX = 47, 94, 0.15 / 47
