@@ -70,7 +70,8 @@ def solids_planes(mesh, snapshots, out, name="solids_fraction.png", title=""):
         top = min(top, extent[2] + 1.5 * (highest + 1) * mesh.spacing[2])
     aspect = (top - extent[2]) / (extent[1] - extent[0])
     width = min(2.4, max(1.2, 6.0 / aspect))
-    fig, axes = plt.subplots(1, len(planes), figsize=(max(5.0, width * len(planes) + 1.2), 6), squeeze=False)
+    fig, axes = plt.subplots(1, len(planes), figsize=(max(5.0, width * len(planes) + 1.2), 6), squeeze=False,
+                             sharey=True)
     image = None
     for ax, (time, plane) in zip(axes[0], planes):
         image = ax.imshow(plane, origin="lower", extent=extent, vmin=0, vmax=SOLIDS_MAX, cmap="viridis",
@@ -85,9 +86,9 @@ def solids_planes(mesh, snapshots, out, name="solids_fraction.png", title=""):
 
 
 def voids(rows, start, out, name="voids.png", title=""):
-    """Per snapshot (report.void_rows: time, void share, bubbles per plane, has a layer, ...): the voids' share of
-    the bed's cells and the bubbles counted per plane."""
-    t, share, bubbles, layer = (np.array([r[k] for r in rows], dtype=float) for k in range(4))
+    """Per snapshot (report.void_rows): the voids' share of the bed's cells and the bubbles counted per plane."""
+    t, share, bubbles, layer = (np.array([r[k] for r in rows], dtype=float)
+                                for k in ("time", "void_share", "bubbles", "layer"))
     fig, (a, b) = plt.subplots(2, 1, figsize=(8, 5), sharex=True)
     a.plot(t, share, "o-", ms=3, lw=0.8)
     a.set_ylabel("void share of the bed")

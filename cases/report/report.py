@@ -28,30 +28,35 @@ MESOSCALE_BOX = 3  # cells: particle-scale agitation averages out, bubble-scale 
 
 
 def void_rows(mesh, snapshots):
-    """Per snapshot [(time, gas_fraction)]: (time, void share, bubbles per plane, has a layer, [bubble widths],
-    emulsion gas fraction), each the mean over the snapshot's planes (Mesh.void_planes)."""
+    """Per snapshot [(time, gas_fraction)]: {time, void_share, bubbles, layer, widths, emulsion, spread}, the void
+    share, bubbles, emulsion gas fraction and lateral spread as means over its planes (Mesh.void_planes), layer
+    whether any plane has a bed-wide layer, widths those of every bubble."""
     rows = []
     dx = mesh.spacing[mesh.width_axis]
     for time, gas_fraction in snapshots:
         planes = mesh.void_planes(gas_fraction)
         measures = [void_shape.snapshot_measure(a, dx) for a in planes]
         holdups = [void_shape.holdup(a) for a in planes]
-        rows.append((time, float(np.mean([h[0] for h in holdups])), float(np.mean([m[1] for m in measures])),
-                     any(m[0] for m in measures), [w for m in measures for w in m[2]],
-                     float(np.nanmean([h[1] for h in holdups])) if any(np.isfinite(h[1]) for h in holdups)
-                     else float("nan")))
+        emulsion = [h[1] for h in holdups if np.isfinite(h[1])]
+        rows.append({"time": time, "void_share": float(np.mean([h[0] for h in holdups])),
+                     "bubbles": float(np.mean([m[1] for m in measures])), "layer": any(m[0] for m in measures),
+                     "widths": [w for m in measures for w in m[2]],
+                     "emulsion": float(np.mean(emulsion)) if emulsion else float("nan"),
+                     "spread": float(np.mean([void_shape.lateral_spread(a) for a in planes]))})
     return rows
 
 
 def void_summary(rows):
-    """{void_share, bubbles_per_plane, bubble_width, layer_share, emulsion_gas_fraction} over rows of void_rows."""
-    widths = [w for r in rows for w in r[4]]
-    emulsion = [r[5] for r in rows if np.isfinite(r[5])]
-    return {"snapshots": len(rows), "void_share": float(np.mean([r[1] for r in rows])),
-            "bubbles_per_plane": float(np.mean([r[2] for r in rows])),
+    """{snapshots, void_share, bubbles_per_plane, bubble_width, layer_share, emulsion_gas_fraction,
+    lateral_spread} over rows of void_rows (bubble width and emulsion NaN without any)."""
+    widths = [w for r in rows for w in r["widths"]]
+    emulsion = [r["emulsion"] for r in rows if np.isfinite(r["emulsion"])]
+    return {"snapshots": len(rows), "void_share": float(np.mean([r["void_share"] for r in rows])),
+            "bubbles_per_plane": float(np.mean([r["bubbles"] for r in rows])),
             "bubble_width": float(np.mean(widths)) if widths else float("nan"),
-            "layer_share": float(np.mean([r[3] for r in rows])),
-            "emulsion_gas_fraction": float(np.mean(emulsion)) if emulsion else float("nan")}
+            "layer_share": float(np.mean([r["layer"] for r in rows])),
+            "emulsion_gas_fraction": float(np.mean(emulsion)) if emulsion else float("nan"),
+            "lateral_spread": float(np.mean([r["spread"] for r in rows]))}
 
 
 def mesoscale_summary(mesh, snapshots_in_window):
@@ -82,8 +87,9 @@ def window_start(monitors, start):
     return start
 
 
-def make(folder, out=None, start=None, title=""):
-    """Draws the report of the run in folder into out (default: folder/report) and returns
+def make(folder, out=None, start=None, title="", labels=None):
+    """Draws the report of the run in folder into out (default: folder/report), titled title, the height columns
+    named by labels {column: name}, and returns
     {"lines": summary lines, "written": [paths], "start": window start, "monitors", "mesh", "snapshots":
     [(time, path)], "voids": void_summary or None, "void_rows"}."""
     monitors = run_output.read_monitors(folder)
@@ -106,7 +112,7 @@ def make(folder, out=None, start=None, title=""):
         lines.append("mean height [mm] (mean, rms): " + ", ".join(
             f"{k} {1000 * np.nanmean(monitors[k][window]):.2f}, {1000 * np.nanstd(monitors[k][window]):.2f}"
             for k in heights))
-        written.append(figures.class_heights(monitors, heights, start, out, title=title))
+        written.append(figures.class_heights(monitors, heights, start, out, title=title, labels=labels))
     snapshots = run_output.series(folder, "fields")
     result = {"lines": lines, "written": written, "start": start, "monitors": monitors, "mesh": None,
               "snapshots": snapshots, "voids": None, "void_rows": []}
@@ -118,7 +124,7 @@ def make(folder, out=None, start=None, title=""):
                                                     for time, path in picked], out, title=title))
         rows = result["void_rows"] = void_rows(mesh, [(time, run_output.read_field(path, "gas_fraction"))
                                                       for time, path in snapshots])
-        in_window = [r for r in rows if r[0] >= start - 1e-12]
+        in_window = [r for r in rows if r["time"] >= start - 1e-12]
         written.append(figures.voids(rows, start, out, title=title))
         planes = "the depth average" if mesh.thin() else "slices at 1/4, 1/2, 3/4 of the depth"
         if in_window:
@@ -126,7 +132,8 @@ def make(folder, out=None, start=None, title=""):
             lines.append(f"voids on {planes}, {v['snapshots']} snapshots: void share {v['void_share']:.3f}, "
                          f"{v['bubbles_per_plane']:.2f} bubbles per plane, mean width "
                          f"{1000 * v['bubble_width']:.1f} mm, a bed-wide layer in {100 * v['layer_share']:.0f} % "
-                         f"of the snapshots, emulsion gas fraction {v['emulsion_gas_fraction']:.3f}")
+                         f"of the snapshots, emulsion gas fraction {v['emulsion_gas_fraction']:.3f}, lateral spread "
+                         f"{v['lateral_spread']:.3f}")
         else:
             lines.append("voids: no field snapshot in the window")
         motion = mesoscale_summary(mesh, [s for s in snapshots if s[0] >= start - 1e-12])
@@ -152,22 +159,28 @@ def make(folder, out=None, start=None, title=""):
     return result
 
 
+def draw(folder, **options):
+    """make(folder, **options) for a script: prints the summary and the files written and returns make's result;
+    a folder that is not a run's output (or a bad start) ends the script with its message and exit status 2."""
+    try:
+        result = make(folder, **options)
+    except run_output.NotARun as e:
+        print(f"{os.path.basename(sys.argv[0])}: {e}", file=sys.stderr)
+        sys.exit(2)
+    print("\n".join(result["lines"]))
+    for path in result["written"]:
+        print(f"written: {path}")
+    return result
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("output", help="a run's output folder (monitors.csv, fields_*.h5, ...)")
     p.add_argument("--out", help="where the PNGs and report.txt go (default: OUTPUT/report)")
     p.add_argument("--start", type=float, help="first time of the statistics window [s] (default: half the run)")
     args = p.parse_args(argv)
-    try:
-        result = make(args.output, args.out, args.start)
-    except run_output.NotARun as e:
-        print(f"report.py: {e}", file=sys.stderr)
-        return 2
-    print("\n".join(result["lines"]))
-    for path in result["written"]:
-        print(f"written: {path}")
-    return 0
+    draw(args.output, out=args.out, start=args.start)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()

@@ -10,10 +10,8 @@ depth (a quasi-2D bed); NaN marks where the plane has no gas cell (outside a ves
   that hold a gas cell); otherwise it is a bubble, whose width is the number of columns it covers times the
   cell width.
 - The void share (holdup) is the share of the inside-bed cells that lie in voids, layers included.
-A snapshot "has a layer" when any void is a layer. The measure of a run is the share of snapshots with a
-layer, the mean number of bubbles per snapshot and their mean width, and the lateral spread: the standard
-deviation of a across the width, averaged over the rows inside the bed (row-mean solids fraction above
-SURFACE_SOLIDS) and the snapshots (a bed of flat bands has little, one with bubbles much).
+- The lateral spread is the standard deviation of a across the width, averaged over the rows inside the bed
+  (row-mean solids fraction above SURFACE_SOLIDS): a bed of flat bands has little, one with bubbles much.
 VOID_GAS is 0.7, below the 0.8 of a bubble's core: a kernel that spreads each particle over a few cells
 smears a void's edge, and the threshold is one for every bed so that beds are measured alike.
 """
@@ -141,21 +139,3 @@ def lateral_spread(a):
     rows = np.zeros(a.shape[0], dtype=bool)
     rows[held] = (1.0 - np.nanmean(a[held], axis=1)) > SURFACE_SOLIDS
     return float(np.nanstd(a[rows], axis=1).mean()) if rows.any() else 0.0
-
-
-def run_measure(snapshots):
-    """Summary over snapshots [(a, dx), ...]: layer share, mean bubbles per snapshot, mean bubble width [m]
-    (nan without bubbles), mean lateral spread."""
-    layers, counts, widths, spreads = 0, [], [], []
-    for a, dx in snapshots:
-        has_layer, count, w = snapshot_measure(a, dx)
-        layers += has_layer
-        counts.append(count)
-        widths += w
-        spreads.append(lateral_spread(a))
-    n = max(len(snapshots), 1)
-    return {"snapshots": len(snapshots), "layer_share": layers / n,
-            "bubbles_per_snapshot": float(np.mean(counts)) if counts else 0.0,
-            "mean_bubble_width": float(np.mean(widths)) if widths else float("nan"),
-            "lateral_spread": float(np.mean(spreads)) if spreads else 0.0}
-
