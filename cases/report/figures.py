@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 SOLIDS_MAX = 0.65  # colour scale of the solids fraction: about random close packing
 
 
-def _save(fig, out, name):
+def save(fig, out, name):
     path = os.path.join(out, name)
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -41,7 +41,7 @@ def pressure_drop(monitors, start, out, name="pressure_drop.png", title=""):
         _shade(ax, start, t[-1])
     fig.suptitle(title or "bed pressure drop against the bed weight")
     fig.tight_layout()
-    return _save(fig, out, name)
+    return save(fig, out, name)
 
 
 def class_heights(monitors, columns, start, out, name="class_heights.png", title="", labels=None):
@@ -55,7 +55,7 @@ def class_heights(monitors, columns, start, out, name="class_heights.png", title
     ax.legend(fontsize=8)
     fig.suptitle(title or "mean height of each class")
     fig.tight_layout()
-    return _save(fig, out, name)
+    return save(fig, out, name)
 
 
 def solids_planes(mesh, snapshots, out, name="solids_fraction.png", title=""):
@@ -82,7 +82,7 @@ def solids_planes(mesh, snapshots, out, name="solids_fraction.png", title=""):
     axes[0][0].set_ylabel("z [m]")
     fig.colorbar(image, ax=axes[0].tolist(), shrink=0.7, label="solids fraction")
     fig.suptitle(title or "solids fraction on the vertical mid-depth plane", fontsize=10)
-    return _save(fig, out, name)
+    return save(fig, out, name)
 
 
 def voids(rows, start, out, name="voids.png", title=""):
@@ -103,7 +103,7 @@ def voids(rows, start, out, name="voids.png", title=""):
         _shade(ax, start, t.max() + 1e-9)
     fig.suptitle(title or "voids in the bed (gas fraction above 0.7, at least 4 cells)")
     fig.tight_layout()
-    return _save(fig, out, name)
+    return save(fig, out, name)
 
 
 def averaged_profile(header, columns, out, name="averages_profile.png"):
@@ -118,7 +118,7 @@ def averaged_profile(header, columns, out, name="averages_profile.png"):
         ax.grid(alpha=0.3)
     fig.suptitle(header.lstrip("# "), fontsize=9)
     fig.tight_layout()
-    return _save(fig, out, name)
+    return save(fig, out, name)
 
 
 def averaged_fields(mesh, fields, time, out, name="averages_fields.png"):
@@ -134,4 +134,4 @@ def averaged_fields(mesh, fields, time, out, name="averages_fields.png"):
         fig.colorbar(image, ax=ax, shrink=0.6)
     axes[0][0].set_ylabel("z [m]")
     fig.suptitle(f"time averages on the vertical mid-depth plane, written at t = {time:.4g} s")
-    return _save(fig, out, name)
+    return save(fig, out, name)
