@@ -109,7 +109,7 @@ class RunMeasure(unittest.TestCase):
             self.assertIsNone(mesoscale.run_measure(folder, 3.0, 4.0, 3))
             done = subprocess.run([sys.executable, os.path.join(HERE, "mesoscale.py"), folder, "--start", "3"],
                                   capture_output=True, text=True)
-            self.assertNotEqual(done.returncode, 0)
+            self.assertEqual(done.returncode, 2)
             self.assertIn("no field snapshot between t = 3 and inf s", done.stderr)
             done = subprocess.run([sys.executable, os.path.join(HERE, "mesoscale.py"), folder, "--start", "1",
                                    "--end", "1.5"], capture_output=True, text=True, check=True)
