@@ -19,7 +19,7 @@ def save(fig, out, name):
 
 
 def _shade(ax, start, end):
-    ax.axvspan(start, end, color="0.9", zorder=0)
+    ax.axvspan(start, end, color="0.9", zorder=0, label="statistics window")
     ax.set_xlim(right=end)
 
 

@@ -87,21 +87,10 @@ def window_start(monitors, start):
     return start
 
 
-def make(folder, out=None, start=None, title="", labels=None):
-    """Draws the report of the run in folder into out (default: folder/report), titled title, the height columns
-    named by labels {column: name}, and returns
-    {"lines": summary lines, "written": [paths], "start": window start, "monitors", "mesh", "snapshots":
-    [(time, path)], "voids": void_summary or None, "void_rows"}."""
-    monitors = run_output.read_monitors(folder)
-    start = window_start(monitors, start)
-    out = out or os.path.join(folder, "report")
-    os.makedirs(out, exist_ok=True)
-    t = monitors["time"]
-    window = t >= start - 1e-12
-    prefix = f"{title}: " if title else ""
-    lines = [f"{prefix}{folder}: monitors {t[0]:g}-{t[-1]:g} s ({len(t)} rows); statistics over "
-             f"{t[window][0]:g}-{t[-1]:g} s"]
-    written = []
+def monitor_part(monitors, start, out, title, labels):
+    """The pressure drop and the class heights: (summary lines, PNGs)."""
+    window = monitors["time"] >= start - 1e-12
+    lines, written = [], []
     if "bed_pressure_drop" in monitors and "bed_weight_per_area" in monitors:
         dp, weight = monitors["bed_pressure_drop"][window], monitors["bed_weight_per_area"][window]
         lines.append(f"bed pressure drop {dp.mean():.4g} Pa, weight per area {weight.mean():.4g} Pa: "
@@ -113,35 +102,40 @@ def make(folder, out=None, start=None, title="", labels=None):
             f"{k} {1000 * np.nanmean(monitors[k][window]):.2f}, {1000 * np.nanstd(monitors[k][window]):.2f}"
             for k in heights))
         written.append(figures.class_heights(monitors, heights, start, out, title=title, labels=labels))
-    snapshots = run_output.series(folder, "fields")
-    result = {"lines": lines, "written": written, "start": start, "monitors": monitors, "mesh": None,
-              "snapshots": snapshots, "voids": None, "void_rows": []}
-    if snapshots:
-        mesh = result["mesh"] = run_output.Mesh(os.path.join(folder, "fields_mesh.h5"))
-        picked = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1,
-                                                         min(MAX_SNAPSHOT_PANELS, len(snapshots)))]
-        written.append(figures.solids_planes(mesh, [(time, run_output.read_field(path, "gas_fraction"))
-                                                    for time, path in picked], out, title=title))
-        rows = result["void_rows"] = void_rows(mesh, [(time, run_output.read_field(path, "gas_fraction"))
-                                                      for time, path in snapshots])
-        in_window = [r for r in rows if r["time"] >= start - 1e-12]
-        written.append(figures.voids(rows, start, out, title=title))
-        planes = "the depth average" if mesh.thin() else "slices at 1/4, 1/2, 3/4 of the depth"
-        if in_window:
-            v = result["voids"] = void_summary(in_window)
-            lines.append(f"voids on {planes}, {v['snapshots']} snapshots: void share {v['void_share']:.3f}, "
-                         f"{v['bubbles_per_plane']:.2f} bubbles per plane, mean width "
-                         f"{1000 * v['bubble_width']:.1f} mm, a bed-wide layer in {100 * v['layer_share']:.0f} % "
-                         f"of the snapshots, emulsion gas fraction {v['emulsion_gas_fraction']:.3f}, lateral spread "
-                         f"{v['lateral_spread']:.3f}")
-        else:
-            lines.append("voids: no field snapshot in the window")
-        motion = mesoscale_summary(mesh, [s for s in snapshots if s[0] >= start - 1e-12])
-        if motion:
-            lines.append(f"mesoscale motion (boxes of {MESOSCALE_BOX} x {MESOSCALE_BOX} cells, {planes}): solids "
-                         f"box-velocity variance x {1e4 * motion['solids_var_x']:.2f}, z "
-                         f"{1e4 * motion['solids_var_z']:.2f} cm2/s2; gas x {1e4 * motion['gas_var_x']:.1f}, z "
-                         f"{1e4 * motion['gas_var_z']:.1f} cm2/s2")
+    return lines, written
+
+
+def field_part(folder, snapshots, start, out, title, result):
+    """The solids-fraction planes, the voids and the mesoscale motion of the field snapshots [(time, path)]:
+    (summary lines, PNGs); sets result's mesh, voids and void_rows."""
+    mesh = result["mesh"] = run_output.Mesh(os.path.join(folder, "fields_mesh.h5"))
+    picked = [snapshots[int(i)] for i in np.linspace(0, len(snapshots) - 1, min(MAX_SNAPSHOT_PANELS, len(snapshots)))]
+    written = [figures.solids_planes(mesh, [(time, run_output.read_field(path, "gas_fraction"))
+                                            for time, path in picked], out, title=title)]
+    rows = result["void_rows"] = void_rows(mesh, [(time, run_output.read_field(path, "gas_fraction"))
+                                                  for time, path in snapshots])
+    written.append(figures.voids(rows, start, out, title=title))
+    in_window = [r for r in rows if r["time"] >= start - 1e-12]
+    planes = "the depth average" if mesh.thin() else "slices at 1/4, 1/2, 3/4 of the depth"
+    if not in_window:
+        return ["voids: no field snapshot in the window"], written
+    v = result["voids"] = void_summary(in_window)
+    lines = [f"voids on {planes}, {v['snapshots']} snapshots: void share {v['void_share']:.3f}, "
+             f"{v['bubbles_per_plane']:.2f} bubbles per plane, mean width {1000 * v['bubble_width']:.1f} mm, a "
+             f"bed-wide layer in {100 * v['layer_share']:.0f} % of the snapshots, emulsion gas fraction "
+             f"{v['emulsion_gas_fraction']:.3f}, lateral spread {v['lateral_spread']:.3f}"]
+    motion = mesoscale_summary(mesh, [s for s in snapshots if s[0] >= start - 1e-12])
+    if motion:
+        lines.append(f"mesoscale motion (boxes of {MESOSCALE_BOX} x {MESOSCALE_BOX} cells, {planes}): solids "
+                     f"box-velocity variance horizontal {1e4 * motion['solids_var_x']:.2f}, vertical "
+                     f"{1e4 * motion['solids_var_z']:.2f} cm2/s2; gas horizontal {1e4 * motion['gas_var_x']:.1f}, "
+                     f"vertical {1e4 * motion['gas_var_z']:.1f} cm2/s2")
+    return lines, written
+
+
+def averages_part(folder, out):
+    """The time averages of monitors.average (averages.csv, averages_*.h5): (summary lines, PNGs)."""
+    lines, written = [], []
     averages = run_output.read_averages_csv(folder)
     if averages and {"z", "mean_pressure", "interval_mid_z", "dp_over_g_dz"} <= set(averages[1]):
         lines.append(averages[0].lstrip("# "))
@@ -153,9 +147,34 @@ def make(folder, out=None, start=None, title="", labels=None):
         fields = {k: run_output.read_field(path, k) for k in ("mean_solids_fraction", "mean_gas_speed",
                                                                "mean_solids_speed")}
         written.append(figures.averaged_fields(mesh, {k: v for k, v in fields.items() if v is not None}, time, out))
+    return lines, written
+
+
+def make(folder, out=None, start=None, title="", labels=None):
+    """Draws the report of the run in folder into out (default: folder/report), titled title, the height columns
+    named by labels {column: name}, and returns
+    {"lines": summary lines, "written": [paths], "start": window start, "monitors", "mesh", "snapshots":
+    [(time, path)], "voids": void_summary or None, "void_rows"}."""
+    monitors = run_output.read_monitors(folder)
+    start = window_start(monitors, start)
+    out = out or os.path.join(folder, "report")
+    os.makedirs(out, exist_ok=True)
+    t = monitors["time"]
+    prefix = f"{title}: " if title else ""
+    result = {"lines": [f"{prefix}{folder}: monitors {t[0]:g}-{t[-1]:g} s ({len(t)} rows); statistics over "
+                        f"{t[t >= start - 1e-12][0]:g}-{t[-1]:g} s"],
+              "written": [], "start": start, "monitors": monitors, "mesh": None,
+              "snapshots": run_output.series(folder, "fields"), "voids": None, "void_rows": []}
+    parts = [monitor_part(monitors, start, out, title, labels)]
+    if result["snapshots"]:
+        parts.append(field_part(folder, result["snapshots"], start, out, title, result))
+    parts.append(averages_part(folder, out))
+    for lines, written in parts:
+        result["lines"] += lines
+        result["written"] += written
     with open(os.path.join(out, "report.txt"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    written.append(os.path.join(out, "report.txt"))
+        f.write("\n".join(result["lines"]) + "\n")
+    result["written"].append(os.path.join(out, "report.txt"))
     return result
 
 

@@ -115,7 +115,7 @@ class Report(unittest.TestCase):
             self.assertIn("mean_z_type1 30.00, 10.00", summary)
             self.assertNotIn("mean_z_type2", summary)
             self.assertIn("void share 0.133", summary)
-            self.assertIn("solids box-velocity variance x 0.00, z 0.00", summary)  # solids at rest
+            self.assertIn("solids box-velocity variance horizontal 0.00, vertical 0.00", summary)  # solids at rest
             for name in ("pressure_drop", "class_heights", "solids_fraction", "voids"):
                 self.assertTrue(png_ok(os.path.join(folder, "report", name + ".png")), name)
             self.assertFalse(os.path.exists(os.path.join(folder, "report", "averages_profile.png")))
