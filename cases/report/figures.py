@@ -58,6 +58,26 @@ def class_heights(monitors, columns, start, out, name="class_heights.png", title
     return save(fig, out, name)
 
 
+def parcel_profiles(parcels, time, out, name="parcel_profiles.png", title="", labels=None, bins=30):
+    """The solid volume of each atom type per height bin at one parcel snapshot (read_parcels), each type's
+    profile normalised to its own total: where each class sits in the bed."""
+    fig, ax = plt.subplots(figsize=(5, 6))
+    edges = np.linspace(parcels["z"].min(), parcels["z"].max() + 1e-12, bins + 1)
+    for kind in np.unique(parcels["type"]):
+        mine = parcels["type"] == kind
+        volume, _ = np.histogram(parcels["z"][mine], edges, weights=parcels["solid_volume"][mine])
+        ax.plot(volume / volume.sum() / np.diff(edges), 0.5 * (edges[1:] + edges[:-1]), lw=1.2,
+                label=(labels or {}).get(f"mean_z_type{kind}", f"type {kind}"))
+    ax.set_xlabel("share of the type's solid volume per m of height [1/m]")
+    ax.set_ylabel("z [m]")
+    ax.legend(fontsize=8)
+    fig.suptitle(title or f"where each type sits, t = {time:.4g} s", fontsize=10)
+    if title:
+        ax.set_title(f"parcels at t = {time:.4g} s", fontsize=9)
+    fig.tight_layout()
+    return save(fig, out, name)
+
+
 def solids_planes(mesh, snapshots, out, name="solids_fraction.png", title=""):
     """The solids fraction on the vertical mid-depth plane at each snapshot [(time, gas_fraction per cell)],
     cropped above the highest solids of any of them."""

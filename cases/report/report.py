@@ -9,6 +9,7 @@ Draws (each only when the run wrote what it needs; README.md here defines every 
   solids_fraction.png solids fraction on the vertical mid-depth plane at up to six field snapshots
   voids.png           the voids' share of the bed's cells and the bubbles per plane, per snapshot
   averages_profile.png, averages_fields.png   the time averages of monitors.average
+  parcel_profiles.png each atom type's solid volume against height at the last parcel snapshot
 and writes report.txt: the statistics over the window from --start (default: the second half of the run) to
 the end. Exit status 2 for a folder that is not a run's output or a --start outside the run.
 """
@@ -150,6 +151,20 @@ def averages_part(folder, out):
     return lines, written
 
 
+def parcel_part(folder, out, title, labels):
+    """The height profile of each atom type at the last parcel snapshot: (summary lines, PNGs)."""
+    snapshots = run_output.series(folder, "parcels")
+    if not snapshots:
+        return [], []
+    time, path = snapshots[-1]
+    parcels = run_output.read_parcels(path)
+    if not len(parcels["z"]):
+        return [f"parcels at t = {time:g} s: none"], []
+    counts = ", ".join(f"type {k} {np.sum(parcels['type'] == k)}" for k in np.unique(parcels["type"]))
+    return ([f"parcels at t = {time:g} s: {len(parcels['z'])} ({counts})"],
+            [figures.parcel_profiles(parcels, time, out, title=title, labels=labels)])
+
+
 def make(folder, out=None, start=None, title="", labels=None):
     """Draws the report of the run in folder into out (default: folder/report), titled title, the height columns
     named by labels {column: name}, and returns
@@ -169,6 +184,7 @@ def make(folder, out=None, start=None, title="", labels=None):
     if result["snapshots"]:
         parts.append(field_part(folder, result["snapshots"], start, out, title, result))
     parts.append(averages_part(folder, out))
+    parts.append(parcel_part(folder, out, title, labels))
     for lines, written in parts:
         result["lines"] += lines
         result["written"] += written

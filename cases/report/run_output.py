@@ -54,6 +54,14 @@ def read_field(path, name):
         return np.asarray(f[name]) if name in f else None
 
 
+def read_parcels(path):
+    """One parcel snapshot as {"z": heights, "type": atom types, "solid_volume": np pi dp^3 / 6 per parcel}."""
+    with h5py.File(path, "r") as f:
+        dp, count = np.asarray(f["dp"]), np.asarray(f["np"])
+        return {"z": np.asarray(f["position"])[:, 2], "type": np.asarray(f["type"]),
+                "solid_volume": count * np.pi / 6 * dp ** 3}
+
+
 class Mesh:
     """The written cells of NAME_mesh.h5 on their background grid: index[d] (cell index along x, y, z), shape,
     spacing, origin. The plane of the report is vertical, along the wider horizontal axis (width_axis) at a

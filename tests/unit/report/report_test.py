@@ -142,7 +142,7 @@ class Report(unittest.TestCase):
             self.assertNotIn("mesoscale", text(os.path.join(folder, "elsewhere", "report.txt")))
             self.assertTrue(png_ok(os.path.join(folder, "elsewhere", "solids_fraction.png")))
 
-    def test_time_averages_are_drawn(self):
+    def test_time_averages_and_parcels_are_drawn(self):
         with tempfile.TemporaryDirectory(prefix="pf_report_") as folder:
             thin_bed(folder)
             with open(os.path.join(folder, "averages.csv"), "w") as f:
@@ -154,10 +154,17 @@ class Report(unittest.TestCase):
                 f["time"] = [1.0]
                 for k in ("mean_solids_fraction", "mean_gas_speed", "mean_solids_speed"):
                     f[k] = np.linspace(0, 0.6, len(cells))
+            with h5py.File(os.path.join(folder, "parcels_000000.h5"), "w") as f:
+                f["time"] = [1.0]
+                f["position"] = [[0.01, 0.01, 0.01], [0.02, 0.01, 0.03], [0.05, 0.01, 0.02]]
+                f["velocity"] = np.zeros((3, 3))
+                f["dp"], f["np"], f["type"], f["id"] = [1e-3, 1e-3, 2e-3], [1.0, 1.0, 8.0], [1, 1, 2], [1, 2, 3]
             report.make(folder)
-            for name in ("averages_profile", "averages_fields"):
+            for name in ("averages_profile", "averages_fields", "parcel_profiles"):
                 self.assertTrue(png_ok(os.path.join(folder, "report", name + ".png")), name)
-            self.assertIn("bed height 0.055 m", text(os.path.join(folder, "report", "report.txt")))
+            summary = text(os.path.join(folder, "report", "report.txt"))
+            self.assertIn("bed height 0.055 m", summary)
+            self.assertIn("parcels at t = 1 s: 3 (type 1 2, type 2 1)", summary)
 
     def test_command_line_and_bad_input(self):
         with tempfile.TemporaryDirectory(prefix="pf_report_") as folder:
