@@ -1,6 +1,6 @@
 """Whether a parcelflow run is writing into a folder: it holds an exclusive flock on FOLDER/.parcelflow.lock
-while it runs (coupling/run/output_folder.h). The drivers that clear a run folder before starting again
-(coarse_graining.py, controlled_runs.py) ask first: parcelflow's lock keeps a second run out of a folder, but
+while it runs (coupling/run/output_folder.h). A driver that clears a run folder before starting again
+(coarse_graining.py) asks first: parcelflow's lock keeps a second run out of a folder, but
 not a driver that deletes and recreates the folder under the first, whose later files then land among the
 second's."""
 import fcntl

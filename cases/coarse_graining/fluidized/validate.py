@@ -35,6 +35,7 @@ import yaml
 HERE = os.path.dirname(os.path.abspath(__file__))
 GOLDSCHMIDT = os.path.normpath(os.path.join(HERE, "..", "..", "goldschmidt_segregation"))
 sys.path.insert(0, GOLDSCHMIDT)
+sys.path.insert(0, os.path.normpath(os.path.join(HERE, "..", "..", "report")))
 from coarse_graining import FINE_VARIANTS  # noqa: E402
 import mesoscale  # noqa: E402
 import void_shape  # noqa: E402

@@ -10,13 +10,8 @@ variant and writes the table, and that each bed is what it must be, from the par
 each class with one np and dp, both classes present, and the solid mass of every coarse bed equal to the fine
 bed's within the mass of one of its parcels. np8_linear runs once more with coupling.class_collisions: it must
 finish, report its uncorrected cell-steps (none: both classes have l = 2) and move its parcels otherwise than
-the run without (the force reaches them); it dumps its contacts in bursts (liggghts.variables.contact_period)
-and contact_exchange.py reads them: at least two bursts, large parcels touching small ones, finite powers (the
-script checks that the dumped force is the one on the pair's first sphere); dispersion.py reads the same
-bursts: finite, positive dispersion coefficients for both classes; granular_rheology.py too: finite rows of
-stress and shear rate. class_temperature.py reads the fine and np 8 runs' last snapshots: finite
-temperatures, the unbiased at least the taken one, and about 8 times fewer parcels per kernel for np 8;
-mesoscale.py reads their snapshots: finite, non-negative variances. np8_linear_dissipation_l4 runs once
+the run without (the force reaches them). cases/report/mesoscale.py reads the fine and np 8 runs' last
+snapshots: finite, non-negative variances. np8_linear_dissipation_l4 runs once
 (fix parcel's shear_stress 0.97): the fix reports the parcels' restitution 0.233 with the wall type 3 kept, and
 parcelflow's bubbling warning says that shear_stress is on.
 The temporary folder is removed at the end.
@@ -71,11 +66,8 @@ def main():
         root_cc = os.path.join(work, "runs_class_collisions")
         run([sys.executable, SCRIPT, parcelflow, root_cc, "np8_linear", "--case", case, "--end", "0.02", "--start",
              "0.01", "--ranks", ranks, "--mpirun", shlex.join(mpirun),
-             "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}",
-             "--set", "liggghts.variables.contact_period=96"])
+             "--set", "coupling.class_collisions={restitution: 0.97, friction: 0.1}"])
         check_class_collisions(os.path.join(root, "np8_linear", "run"), os.path.join(root_cc, "np8_linear", "run"))
-        check_contact_dumps(os.path.join(root_cc, "np8_linear"))
-        check_class_temperature(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
         check_mesoscale(os.path.join(root, "fine", "run"), os.path.join(root, "np8_linear", "run"))
         root_ss = os.path.join(work, "runs_shear_stress")
         run([sys.executable, SCRIPT, parcelflow, root_ss, "np8_linear_dissipation_l4", "--case", case, "--end", "0.02",
@@ -133,61 +125,14 @@ def check_class_collisions(without, with_model):
         fail("coupling.class_collisions left every parcel where it was without it: no force reached them")
 
 
-def check_contact_dumps(variant):
-    contacts = os.path.join(variant, "case", "contacts")
-    script = os.path.join(CASES, "goldschmidt_segregation", "contact_exchange.py")
-    out = run([sys.executable, script, os.path.join(variant, "run"), contacts, "--tmin", "0"])
-    print(out)
-    bursts = re.search(r": (\d+) bursts from", out)
-    rows = re.findall(r"^\[[\d.]+, [\d.]+\), (\d+), (\S+), (\S+) / (\S+), (\S+)$", out, re.M)
-    if not bursts or int(bursts.group(1)) < 2:
-        fail("contact_exchange.py found fewer than 2 complete bursts of contact dumps")
-    if not rows or not all(math.isfinite(float(x)) for row in rows for x in row):
-        fail("contact_exchange.py printed no finite row")
-    if sum(int(r[0]) * float(r[1]) for r in rows) <= 0:
-        fail("contact_exchange.py: no large parcel touched a small one")
-    script = os.path.join(CASES, "goldschmidt_segregation", "dispersion.py")
-    out = run([sys.executable, script, contacts, "--tmin", "0", "--lags", "1"])
-    print(out)
-    coefficients = [float(x) for x in re.findall(r"D_[zx] (\S+) cm2/s", out)]
-    if len(coefficients) != 4 or not all(math.isfinite(x) and x > 0 for x in coefficients):
-        fail(f"dispersion.py printed {coefficients}, expected D_z and D_x of both classes, finite and positive")
-    script = os.path.join(CASES, "goldschmidt_segregation", "granular_rheology.py")
-    out = run([sys.executable, script, os.path.join(variant, "run"), contacts, "--tmin", "0"])
-    print(out)
-    rows = re.findall(r"^\[[\d.]+, [\d.]+\), (\d+), (\S+), (\S+), (\S+), (\S+)$", out, re.M)
-    if not rows or not all(math.isfinite(float(x)) for row in rows for x in row):
-        fail("granular_rheology.py printed no finite row of solids fraction, shear rate, pressure, viscosity")
-
-
 def check_mesoscale(fine, coarse):
-    script = os.path.join(CASES, "goldschmidt_segregation", "mesoscale.py")
+    script = os.path.join(CASES, "report", "mesoscale.py")
     out = run([sys.executable, script, fine, coarse, "--start", "0"])
     print(out)
     rows = re.findall(r"^.{40} +\d+((?: +\S+){6})$", out, re.M)
     values = [float(x) for row in rows for x in row.split()]
     if len(rows) != 2 or not all(math.isfinite(x) and x >= 0 for x in values):
         fail(f"mesoscale.py printed {rows}, expected one row of six finite, non-negative values per run")
-
-
-def check_class_temperature(fine, coarse):
-    script = os.path.join(CASES, "goldschmidt_segregation", "class_temperature.py")
-    out = run([sys.executable, script, fine, coarse])
-    print(out)
-    rows = [line for line in out.splitlines() if line.startswith((fine, coarse))]
-    if len(rows) != 2:
-        fail(f"class_temperature.py printed {len(rows)} rows for the two runs' last snapshots, expected 2")
-    parcels = []
-    for row in rows:
-        classes = [[float(x) for x in c] for c in re.findall(r"type \d: (\S+) / (\S+), n ([^;]+)", row)]
-        if len(classes) != 2 or not all(math.isfinite(x) and x >= 0 for c in classes for x in c) or \
-                any(unbiased < taken for taken, unbiased, _ in classes):
-            fail(f"class_temperature.py: {row}")
-        parcels.append([n for _, _, n in classes])
-    ratios = [f / c for f, c in zip(*parcels)]
-    print(f"[measured] parcels per kernel, fine / np 8: {ratios[0]:.2f} small, {ratios[1]:.2f} large")
-    if not all(5 < r < 12 for r in ratios):
-        fail(f"class_temperature.py: fine / np 8 parcels per kernel {ratios}, expected about 8")
 
 
 def check(rows):

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Unit test of cases/goldschmidt_segregation/void_shape.py (issue 14) on synthetic fields with known bubbles
+"""Unit test of cases/report/void_shape.py on synthetic fields with known bubbles
 and layers: a 47 x 94 cell bed (the Goldschmidt mesh) of solids fraction 0.6 up to row 30 under a gas-only
 freeboard, with voids carved into it."""
 import os
@@ -8,8 +8,7 @@ import unittest
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases",
-                                "goldschmidt_segregation"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "cases", "report"))
 import void_shape  # noqa: E402
 
 NX, NZ, DX = 47, 94, 0.15 / 47
@@ -74,16 +73,18 @@ class VoidShape(unittest.TestCase):
         a[25:30, 20:26] = 0.95  # an erupting bubble: nothing dense above it in its columns
         self.assertEqual(void_shape.snapshot_measure(a, DX), (False, 0, []))
 
-    def test_run_measure_averages_over_snapshots(self):
-        layered, bubbly = bed(), bed()
-        layered[12:14, :] = 0.9
-        carve_disc(bubbly, 10, 20, 2)  # 5 columns wide
-        m = void_shape.run_measure([(layered, DX), (bubbly, DX), (bed(), DX), (bed(), DX)])
-        self.assertEqual(m["snapshots"], 4)
-        self.assertAlmostEqual(m["layer_share"], 0.25)
-        self.assertAlmostEqual(m["bubbles_per_snapshot"], 0.25)
-        self.assertAlmostEqual(m["mean_bubble_width"], 5 * DX)
-        self.assertAlmostEqual(m["lateral_spread"], void_shape.lateral_spread(bubbly) / 4)
+    def test_a_plane_with_holes_measures_its_width_in_cells_it_has(self):
+        a = bed()
+        a[:, :5] = np.nan  # outside a vessel of cut cells: 42 columns of gas cells
+        a[:, -5:] = np.nan
+        a[12:14, 6:41] = 0.9  # 35 of 37 columns: a layer there (35 > 0.8 x 37), a bubble on the full 47 (< 37.6)
+        self.assertEqual(void_shape.snapshot_measure(a, DX), (True, 0, []))
+        share, emulsion = void_shape.holdup(a)
+        self.assertAlmostEqual(share, 70 / (30 * 37))
+        self.assertAlmostEqual(emulsion, 0.4)
+        b = bed()
+        b[:, :5] = np.nan
+        self.assertAlmostEqual(void_shape.lateral_spread(b), 0.0, places=14)  # holes are not gas
 
     def test_lateral_spread_is_zero_for_flat_bands_and_known_for_a_half_void_row(self):
         a = bed()

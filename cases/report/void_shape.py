@@ -1,19 +1,19 @@
-"""The shape of the gas voids in a quasi-2D bed (issue 14): bubbles or bed-wide gas layers.
+"""The gas voids of a bed on a vertical plane of cells: bubbles or bed-wide gas layers, and their share of the bed.
 
-A field snapshot is reduced to the depth-averaged gas fraction a(x, z) on the mesh's columns and rows.
+A plane a[z, x] holds the gas fraction of one row of cells across the depth (a slice) or its average over the
+depth (a quasi-2D bed); NaN marks where the plane has no gas cell (outside a vessel of cut cells).
 - The bed surface of a column x is the top of its highest cell whose solids fraction (1 - a) exceeds
   SURFACE_SOLIDS; cells below it are inside the bed.
-- A void cell is an inside-bed cell with a > VOID_GAS. Voids are the 4-connected groups of void cells
-  with at least MIN_CELLS cells (smaller groups are the gaps between single beads at this mesh size).
-- A void is a layer when the columns it covers span more than LAYER_SPAN of the bed width; otherwise it
-  is a bubble, whose width is the number of columns it covers times the cell width.
-A snapshot "has a layer" when any void is a layer. The measure of a run is the share of snapshots with a
-layer, the mean number of bubbles per snapshot and their mean width, and the lateral spread: the standard
-deviation of a across the width, averaged over the rows inside the bed (row-mean solids fraction above
-SURFACE_SOLIDS) and the snapshots (a bed of flat bands has little, one with bubbles much).
-VOID_GAS is 0.7, not the 0.8 of a bubble's core: with the 7.4 mm tall cells of the earlier 0.7 m column the
-kernel spread each bead over +-15 mm vertically and its gas layers reached a_g 0.6-0.8 only (bed 0.35-0.45,
-freeboard 1); the threshold stays 0.7 so that every run of the case is measured alike.
+- A void cell is an inside-bed cell with a > VOID_GAS. Voids are the 4-connected groups of void cells with at
+  least MIN_CELLS cells (smaller groups are the gaps between single particles at a fine mesh).
+- A void is a layer when the columns it covers span more than LAYER_SPAN of the plane's width (its columns
+  that hold a gas cell); otherwise it is a bubble, whose width is the number of columns it covers times the
+  cell width.
+- The void share (holdup) is the share of the inside-bed cells that lie in voids, layers included.
+- The lateral spread is the standard deviation of a across the width, averaged over the rows inside the bed
+  (row-mean solids fraction above SURFACE_SOLIDS): a bed of flat bands has little, one with bubbles much.
+VOID_GAS is 0.7, below the 0.8 of a bubble's core: a kernel that spreads each particle over a few cells
+smears a void's edge, and the threshold is one for every bed so that beds are measured alike.
 """
 from collections import deque
 
@@ -73,7 +73,8 @@ def depth_slices(gas_fraction, centres, fractions):
 def inside_bed(a):
     """The cells of a[z, x] inside the bed: in each column, those up to its highest cell with solids fraction
     above SURFACE_SOLIDS."""
-    solid = (1.0 - a) > SURFACE_SOLIDS
+    with np.errstate(invalid="ignore"):
+        solid = (1.0 - a) > SURFACE_SOLIDS  # NaN (no cell) is neither solid nor void
     inside = np.zeros_like(solid)
     for x in range(a.shape[1]):
         rows = np.nonzero(solid[:, x])[0]
@@ -85,7 +86,8 @@ def inside_bed(a):
 def voids(a):
     """The voids of a[z, x] as lists of (z, x) cells (module docstring)."""
     nz, nx = a.shape
-    void = inside_bed(a) & (a > VOID_GAS)
+    with np.errstate(invalid="ignore"):
+        void = inside_bed(a) & (a > VOID_GAS)
     seen = np.zeros_like(void)
     found = []
     for z0, x0 in zip(*np.nonzero(void)):
@@ -108,7 +110,7 @@ def voids(a):
 
 def snapshot_measure(a, dx):
     """(has_layer, bubble count, list of bubble widths [m]) of one snapshot a[z, x]."""
-    nx = a.shape[1]
+    nx = int(np.isfinite(a).any(axis=0).sum())  # the plane's width in columns (inside a vessel)
     has_layer, widths = False, []
     for group in voids(a):
         columns = len({x for _, x in group})
@@ -133,43 +135,7 @@ def holdup(a):
 
 def lateral_spread(a):
     """Standard deviation of a[z, x] across the width, averaged over the rows inside the bed (0 without any)."""
-    rows = (1.0 - a).mean(axis=1) > SURFACE_SOLIDS
-    return float(a[rows].std(axis=1).mean()) if rows.any() else 0.0
-
-
-def run_measure(snapshots):
-    """Summary over snapshots [(a, dx), ...]: layer share, mean bubbles per snapshot, mean bubble width [m]
-    (nan without bubbles), mean lateral spread."""
-    layers, counts, widths, spreads = 0, [], [], []
-    for a, dx in snapshots:
-        has_layer, count, w = snapshot_measure(a, dx)
-        layers += has_layer
-        counts.append(count)
-        widths += w
-        spreads.append(lateral_spread(a))
-    n = max(len(snapshots), 1)
-    return {"snapshots": len(snapshots), "layer_share": layers / n,
-            "bubbles_per_snapshot": float(np.mean(counts)) if counts else 0.0,
-            "mean_bubble_width": float(np.mean(widths)) if widths else float("nan"),
-            "lateral_spread": float(np.mean(spreads)) if spreads else 0.0}
-
-
-def read_snapshots(folder):
-    """[(path, time, (a, dx)), ...]: each of a run's fields_*.h5 in order, with its depth-averaged gas fraction."""
-    import glob
-    import os
-
-    import h5py
-    with h5py.File(os.path.join(folder, "fields_mesh.h5"), "r") as f:
-        centres = np.asarray(f["points"]).reshape(-1, 8, 3).mean(axis=1)
-    out = []
-    for path in sorted(glob.glob(os.path.join(folder, "fields_[0-9]*.h5"))):
-        with h5py.File(path, "r") as f:
-            out.append((path, float(np.asarray(f["time"])[0]),
-                        depth_averaged(np.asarray(f["gas_fraction"]), centres)))
-    return out
-
-
-def read_run(folder, start=0.0):
-    """The depth-averaged snapshots of a run's fields_*.h5 at times >= start."""
-    return [snapshot for _, time, snapshot in read_snapshots(folder) if time >= start]
+    held = np.isfinite(a).any(axis=1)
+    rows = np.zeros(a.shape[0], dtype=bool)
+    rows[held] = (1.0 - np.nanmean(a[held], axis=1)) > SURFACE_SOLIDS
+    return float(np.nanstd(a[rows], axis=1).mean()) if rows.any() else 0.0

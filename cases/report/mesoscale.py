@@ -1,14 +1,15 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """How strongly the bed moves at the scale of its bubbles: the solids' and the gas's box-averaged velocity
-fluctuations from a run's field snapshots (issue 29).
+fluctuations from a run's field snapshots.
 
-usage: mesoscale.py RUN [RUN ...] [--start 10] [--end T] [--box 3] [--slices]
+usage: mesoscale.py RUN [RUN ...] [--start 0] [--end T] [--box 3] [--slices]
 
 Each snapshot (fields_*.h5: gas_fraction, gas_velocity, solids_velocity per cell) is averaged over the depth
 onto the mesh's rows and columns (z, x) (with --slices, for a bed as deep as it is wide: taken on the slices at
 1/4, 1/2 and 3/4 of the depth, each measured alone and the measures averaged), the solids velocity weighted by
 the solids fraction and the gas velocity taken superficial (times the gas fraction), and then summed over boxes
-of BOX x BOX of those cells, counting only the cells inside the bed (void_shape.py's surface). Per snapshot:
+of BOX x BOX of those cells, counting only the cells inside the bed (void_shape.py's surface); the mesh is a box
+(no cut cells), x its width, y its depth. Per snapshot:
 - solids: the variance of the boxes' solids velocity about the bed's centre-of-mass velocity, weighted by the
   boxes' solids (x and z), and that centre-of-mass velocity;
 - gas: the variance of the boxes' superficial gas velocity about its mean inside the bed, weighted by the
@@ -21,6 +22,7 @@ and the beads it stands for deposit the same solids).
 import argparse
 import glob
 import os
+import sys
 
 import h5py
 import numpy as np
@@ -94,10 +96,16 @@ def run_measure(folder, start, end, box, slices=False):
             "gas_var_x": r[:, 4].mean(), "gas_var_z": r[:, 5].mean()}
 
 
+def refuse(message):
+    """Bad input: the message on stderr, exit status 2."""
+    print(f"mesoscale.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("runs", nargs="+", help="run folders (with fields_mesh.h5 and fields_*.h5)")
-    p.add_argument("--start", type=float, default=10.0, help="first snapshot time [s]")
+    p.add_argument("--start", type=float, default=0.0, help="first snapshot time [s]")
     p.add_argument("--end", type=float, default=float("inf"), help="last snapshot time [s]")
     p.add_argument("--box", type=int, default=3, help="box edge in cells")
     p.add_argument("--slices", action="store_true",
@@ -105,7 +113,7 @@ def main():
                         "average, instead of over the depth")
     args = p.parse_args()
     if args.box < 1:
-        raise SystemExit(f"--box {args.box}: the box edge must be at least 1 cell")
+        refuse(f"--box {args.box}: the box edge must be at least 1 cell")
     where = "on slices at 1/4, 1/2, 3/4 of the depth" if args.slices else "over the depth"
     print(f"boxes of {args.box} x {args.box} cells {where}, snapshots at t = {args.start:g}-{args.end:g} s; "
           "solids and gas box-velocity variance [cm2/s2], centre-of-mass velocity rms [cm/s]")
@@ -114,7 +122,7 @@ def main():
     for folder in args.runs:
         m = run_measure(folder, args.start, args.end, args.box, args.slices)
         if m is None:
-            raise SystemExit(f"{folder}: no field snapshot between t = {args.start:g} and {args.end:g} s")
+            refuse(f"{folder}: no field snapshot between t = {args.start:g} and {args.end:g} s")
         print(f"{folder[-40:]:40s} {m['snapshots']:5d} {1e4 * m['solids_var_x']:9.1f} {1e4 * m['solids_var_z']:9.1f} "
               f"{100 * m['com_rms_x']:6.2f} {100 * m['com_rms_z']:6.2f} {1e4 * m['gas_var_x']:7.0f} "
               f"{1e4 * m['gas_var_z']:7.0f}")
