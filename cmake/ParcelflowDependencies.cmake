@@ -64,7 +64,7 @@ if(PARCELFLOW_WITH_LIGGGHTS)
 endif()
 
 # CGAL (header-only since 5.0; needs GMP and MPFR, which libcgal-dev pulls in): the cut-cell geometry's
-# clipping and booleans (cfd/cut_cell_geometry.cpp; cfd/CMakeLists.txt keeps its compile options on
+# clipping and booleans (cfd/geometry/cut_cell_geometry.cpp; cfd/CMakeLists.txt keeps its compile options on
 # those files). CGAL's config finds GMP and MPFR (libcgal-dev depends on libgmp-dev and libmpfr-dev).
 find_package(CGAL 5.0 QUIET)
 parcelflow_require(CGAL_FOUND "CGAL" "libcgal-dev")

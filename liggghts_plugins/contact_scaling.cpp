@@ -1,4 +1,4 @@
-#include "contact_scaling.h"
+#include "liggghts_plugins/contact_scaling.h"
 
 #include <algorithm>
 #include <sstream>
@@ -10,7 +10,7 @@
 #include "lammps.h"
 #include "modify.h"
 #include "pair_gran.h"
-#include "parcel_math.h"
+#include "liggghts_plugins/parcel_math.h"
 
 using namespace LAMMPS_NS;
 

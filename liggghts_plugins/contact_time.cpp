@@ -1,4 +1,4 @@
-#include "contact_time.h"
+#include "liggghts_plugins/contact_time.h"
 
 #include <mpi.h>
 

@@ -12,7 +12,7 @@
 // that returns that member pointer; the friend is found through argument-dependent lookup on a tag type.
 // No cast, no layout assumption, no undefined behaviour: this is the standard "access via explicit
 // instantiation" idiom. Keep it in this one file; nothing else in parcelflow touches private members.
-#include "fix_map_access.h"
+#include "liggghts_plugins/fix_map_access.h"
 
 #include "lammps.h"
 #include "modify.h"

@@ -1,4 +1,4 @@
-#include "fix_parcel.h"
+#include "liggghts_plugins/fix_parcel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +9,11 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_support.h"
-#include "geometric_limits.h"
+#include "liggghts_plugins/fix_support.h"
+#include "liggghts_plugins/geometric_limits.h"
 #include "group.h"
 #include "modify.h"
-#include "parcel_math.h"
+#include "liggghts_plugins/parcel_math.h"
 
 using namespace LAMMPS_NS;
 using namespace LAMMPS_NS::FixConst;

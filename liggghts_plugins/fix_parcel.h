@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
-#include "contact_scaling.h"
-#include "per_atom_columns_fix.h"
-#include "parcel_settings.h"
-#include "size_class_sequence.h"
+#include "liggghts_plugins/contact_scaling.h"
+#include "liggghts_plugins/per_atom_columns_fix.h"
+#include "liggghts_plugins/parcel_settings.h"
+#include "liggghts_plugins/size_class_sequence.h"
 
 namespace parcelflow::plugins {
 

@@ -1,8 +1,8 @@
-#include "fix_parcel_implicit_drag.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
 
 #include "atom.h"
 #include "comm.h"
-#include "contact_time.h"
+#include "liggghts_plugins/contact_time.h"
 #include "error.h"
 #include "force.h"
 #include "modify.h"

@@ -17,7 +17,7 @@
 // must set up again after write_restart), so both take the same next step.
 #pragma once
 
-#include "per_atom_columns_fix.h"
+#include "liggghts_plugins/per_atom_columns_fix.h"
 
 namespace parcelflow::plugins {
 

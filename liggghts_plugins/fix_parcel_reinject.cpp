@@ -1,4 +1,4 @@
-#include "fix_parcel_reinject.h"
+#include "liggghts_plugins/fix_parcel_reinject.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,10 +9,10 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_support.h"
+#include "liggghts_plugins/fix_support.h"
 #include "modify.h"
-#include "parcel_settings.h"
-#include "per_atom_columns_fix.h"
+#include "liggghts_plugins/parcel_settings.h"
+#include "liggghts_plugins/per_atom_columns_fix.h"
 #include "region.h"
 #include "update.h"
 

@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "fix.h"
-#include "reinject_settings.h"
-#include "sphere_placer.h"
+#include "liggghts_plugins/reinject_settings.h"
+#include "liggghts_plugins/sphere_placer.h"
 
 namespace LAMMPS_NS { class Region; }
 

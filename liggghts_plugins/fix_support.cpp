@@ -1,4 +1,4 @@
-#include "fix_support.h"
+#include "liggghts_plugins/fix_support.h"
 
 namespace parcelflow::plugins {
 

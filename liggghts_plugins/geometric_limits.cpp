@@ -1,4 +1,4 @@
-#include "geometric_limits.h"
+#include "liggghts_plugins/geometric_limits.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "parcel_settings.h"
+#include "liggghts_plugins/parcel_settings.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-#include "parcel_math.h"
+#include "liggghts_plugins/parcel_math.h"
 
 namespace parcelflow::plugins {
 namespace {

@@ -1,4 +1,4 @@
-#include "per_atom_columns_fix.h"
+#include "liggghts_plugins/per_atom_columns_fix.h"
 
 #include <cstring>
 

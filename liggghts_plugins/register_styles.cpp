@@ -1,9 +1,9 @@
-#include "register_styles.h"
+#include "liggghts_plugins/register_styles.h"
 
-#include "fix_map_access.h"
-#include "fix_parcel.h"
-#include "fix_parcel_implicit_drag.h"
-#include "fix_parcel_reinject.h"
+#include "liggghts_plugins/fix_map_access.h"
+#include "liggghts_plugins/fix_parcel.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
+#include "liggghts_plugins/fix_parcel_reinject.h"
 #include "lammps.h"
 
 namespace parcelflow::plugins {

@@ -1,10 +1,10 @@
-#include "reinject_settings.h"
+#include "liggghts_plugins/reinject_settings.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <set>
 
-#include "parcel_settings.h"
+#include "liggghts_plugins/parcel_settings.h"
 
 namespace parcelflow::plugins {
 namespace {

@@ -1,4 +1,4 @@
-#include "size_class_sequence.h"
+#include "liggghts_plugins/size_class_sequence.h"
 
 #include <random>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "sphere_placer.h"
+#include "liggghts_plugins/sphere_placer.h"
 
 #include <cmath>
 

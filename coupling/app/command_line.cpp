@@ -1,4 +1,4 @@
-#include "command_line.h"
+#include "coupling/app/command_line.h"
 
 #include <cmath>
 #include <set>

@@ -14,7 +14,7 @@
 #include <cstdlib>
 
 #include "lammps.h"
-#include "register_styles.h"
+#include "liggghts_plugins/register_styles.h"
 
 void LAMMPS_NS::LAMMPS::post_create() {
   using PostCreate = void (*)(LAMMPS_NS::LAMMPS*);

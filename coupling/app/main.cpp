@@ -12,12 +12,12 @@
 #include "cfd/base/config_error.hpp"
 #include "cfd/base/internal_error.hpp"
 #include "cfd/io/mpi_io_defaults.hpp"
-#include "blowup_guard.h"
-#include "command_line.h"
-#include "contact_time_check.h"
-#include "coupled_run.h"
-#include "liggghts_instance.h"
-#include "stop_signal.h"
+#include "coupling/run/blowup_guard.h"
+#include "coupling/app/command_line.h"
+#include "coupling/dem/contact_time_check.h"
+#include "coupling/run/coupled_run.h"
+#include "coupling/dem/liggghts_instance.h"
+#include "coupling/run/stop_signal.h"
 #include "version.h"
 
 namespace pc = parcelflow::coupling;

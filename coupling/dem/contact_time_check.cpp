@@ -1,4 +1,4 @@
-#include "contact_time_check.h"
+#include "coupling/dem/contact_time_check.h"
 
 #include <cstdio>
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "contact_time.h"
+#include "liggghts_plugins/contact_time.h"
 #include "cfd/base/config_error.hpp"
 
 namespace LAMMPS_NS { class LAMMPS; }

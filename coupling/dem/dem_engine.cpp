@@ -1,4 +1,4 @@
-#include "dem_engine.h"
+#include "coupling/dem/dem_engine.h"
 
 #include <unistd.h>
 
@@ -8,12 +8,12 @@
 
 #include "cfd/base/config_error.hpp"
 #include "cfd/base/number_text.hpp"
-#include "contact_time_check.h"
+#include "coupling/dem/contact_time_check.h"
 #include "domain.h"
 #include "lammps.h"
-#include "liggghts_instance.h"
-#include "script_error_report.h"
-#include "script_variables.h"
+#include "coupling/dem/liggghts_instance.h"
+#include "coupling/dem/script_error_report.h"
+#include "coupling/dem/script_variables.h"
 #include "update.h"
 
 namespace parcelflow::coupling {

@@ -18,8 +18,8 @@
 #include <memory>
 #include <string>
 
-#include "coupling_settings.h"
-#include "dem_parcels.h"
+#include "coupling/run/coupling_settings.h"
+#include "coupling/dem/dem_parcels.h"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "dem_parcels.h"
+#include "coupling/dem/dem_parcels.h"
 
 #include <mpi.h>
 
@@ -10,9 +10,9 @@
 
 #include "atom.h"
 #include "cfd/base/config_error.hpp"
-#include "fix_parcel.h"
-#include "fix_parcel_implicit_drag.h"
-#include "fix_parcel_reinject.h"
+#include "liggghts_plugins/fix_parcel.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
+#include "liggghts_plugins/fix_parcel_reinject.h"
 #include "lammps.h"
 #include "modify.h"
 #include "update.h"

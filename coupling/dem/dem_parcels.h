@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "parcel_mesh_coupler.h"
+#include "coupling/run/parcel_mesh_coupler.h"
 
 namespace LAMMPS_NS { class LAMMPS; }
 namespace parcelflow::plugins { class FixParcel; class FixParcelImplicitDrag; class FixParcelReinject; }

@@ -1,10 +1,10 @@
-#include "liggghts_instance.h"
+#include "coupling/dem/liggghts_instance.h"
 
 #include <csignal>
 #include <cstring>
 #include <string>
 
-#include "contact_time_check.h"
+#include "coupling/dem/contact_time_check.h"
 #include "input.h"
 #include "lammps.h"
 #include "signal_handling.h"

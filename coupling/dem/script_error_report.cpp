@@ -1,4 +1,4 @@
-#include "script_error_report.h"
+#include "coupling/dem/script_error_report.h"
 
 #include <mpi.h>
 

@@ -1,4 +1,4 @@
-#include "script_variables.h"
+#include "coupling/dem/script_variables.h"
 
 #include <cctype>
 #include <cerrno>

@@ -1,4 +1,4 @@
-#include "beetstra_drag.hpp"
+#include "coupling/drag/beetstra_drag.hpp"
 
 namespace parcelflow::coupling {
 

@@ -18,7 +18,7 @@
 // surface d_i^2 (Carman-Kozeny of the Sauter mean), and y_i = 1 gives the monodisperse law exactly.
 // (MFiX's DES model-A branch instead scales the d_i-normalised law by 1/y_i; Beetstra 2007 also has a
 // term 0.064 eps y_i^3 for finite Re that does not reduce to 1 at y_i = 1; neither is used here.)
-#include "drag_input.hpp"
+#include "coupling/drag/drag_input.hpp"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "class_collision_drag.hpp"
+#include "coupling/drag/class_collision_drag.hpp"
 
 #include <cmath>
 

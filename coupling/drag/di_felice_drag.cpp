@@ -1,4 +1,4 @@
-#include "di_felice_drag.hpp"
+#include "coupling/drag/di_felice_drag.hpp"
 
 namespace parcelflow::coupling {
 

@@ -9,7 +9,7 @@
 //   K = beta / a_s = 3/4 (C_D |u - v|) rho_g a_g^(2 - chi) / d_p, and
 //   C_D |u - v| = (0.63 sqrt|u - v| + 4.8 sqrt(mu / (a_g rho_g d_p)))^2  (finite as |u - v| -> 0;
 //   chi -> 3.7 there, the exp term underflows to 0 exactly as in the formula's limit).
-#include "drag_input.hpp"
+#include "coupling/drag/drag_input.hpp"
 
 namespace parcelflow::coupling {
 

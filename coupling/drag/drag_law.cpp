@@ -1,4 +1,4 @@
-#include "drag_law.hpp"
+#include "coupling/drag/drag_law.hpp"
 
 #include <stdexcept>
 #include <type_traits>

@@ -19,13 +19,13 @@
 #include <variant>
 #include <vector>
 
-#include "beetstra_drag.hpp"
-#include "di_felice_drag.hpp"
-#include "ergun_drag.hpp"
-#include "gidaspow_blend_drag.hpp"
-#include "gidaspow_drag.hpp"
-#include "radl_sundaresan_drag.hpp"
-#include "wen_yu_drag.hpp"
+#include "coupling/drag/beetstra_drag.hpp"
+#include "coupling/drag/di_felice_drag.hpp"
+#include "coupling/drag/ergun_drag.hpp"
+#include "coupling/drag/gidaspow_blend_drag.hpp"
+#include "coupling/drag/gidaspow_drag.hpp"
+#include "coupling/drag/radl_sundaresan_drag.hpp"
+#include "coupling/drag/wen_yu_drag.hpp"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "ergun_drag.hpp"
+#include "coupling/drag/ergun_drag.hpp"
 
 namespace parcelflow::coupling {
 

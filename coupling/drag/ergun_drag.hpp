@@ -6,7 +6,7 @@
 // Computed here as K = beta / a_s = 150 a_s mu / (a_g d_p^2) + 1.75 rho_g |u - v| / d_p.
 // On its own it is meant for packed beds (verification against the Ergun pressure drop); note that
 // K -> 1.75 rho |u-v| / d_p (no Stokes term) as a_s -> 0, which is why Gidaspow switches to Wen-Yu.
-#include "drag_input.hpp"
+#include "coupling/drag/drag_input.hpp"
 
 namespace parcelflow::coupling {
 

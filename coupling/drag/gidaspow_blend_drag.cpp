@@ -1,4 +1,4 @@
-#include "gidaspow_blend_drag.hpp"
+#include "coupling/drag/gidaspow_blend_drag.hpp"
 
 namespace parcelflow::coupling {
 

@@ -6,8 +6,8 @@
 //   phi  = 1/2 + arctan(262.5 (a_g - 0.8)) / pi     (262.5 = 150 * 1.75)
 //   beta = (1 - phi) beta_Ergun + phi beta_WenYu.
 // phi = 1/2 exactly at a_g = 0.8; phi -> 1 (Wen-Yu) in dilute and -> 0 (Ergun) in dense regions.
-#include "ergun_drag.hpp"
-#include "wen_yu_drag.hpp"
+#include "coupling/drag/ergun_drag.hpp"
+#include "coupling/drag/wen_yu_drag.hpp"
 
 namespace parcelflow::coupling {
 

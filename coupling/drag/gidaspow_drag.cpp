@@ -1,4 +1,4 @@
-#include "gidaspow_drag.hpp"
+#include "coupling/drag/gidaspow_drag.hpp"
 
 namespace parcelflow::coupling {
 

@@ -6,8 +6,8 @@
 //   beta = Ergun            for a_g <= 0.8.
 // The law is discontinuous at a_g = 0.8 (Ergun/Wen-Yu = 1.10 at 0.01 m/s slip, 1.90 at 5 m/s for 0.5 mm
 // particles in air); see GidaspowBlendDrag for the smooth variant.
-#include "ergun_drag.hpp"
-#include "wen_yu_drag.hpp"
+#include "coupling/drag/ergun_drag.hpp"
+#include "coupling/drag/wen_yu_drag.hpp"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "parcel_drag.hpp"
+#include "coupling/drag/parcel_drag.hpp"
 #include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {

@@ -14,7 +14,7 @@
 #include <type_traits>
 #include <utility>
 
-#include "drag_law.hpp"
+#include "coupling/drag/drag_law.hpp"
 
 namespace parcelflow::coupling {
 

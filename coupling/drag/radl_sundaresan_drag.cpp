@@ -1,4 +1,4 @@
-#include "radl_sundaresan_drag.hpp"
+#include "coupling/drag/radl_sundaresan_drag.hpp"
 
 #include <string>
 

@@ -27,8 +27,8 @@
 #include <cstddef>
 #include <limits>
 
-#include "beetstra_drag.hpp"
-#include "drag_input.hpp"
+#include "coupling/drag/beetstra_drag.hpp"
+#include "coupling/drag/drag_input.hpp"
 
 namespace parcelflow::coupling {
 

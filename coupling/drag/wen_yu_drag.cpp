@@ -1,4 +1,4 @@
-#include "wen_yu_drag.hpp"
+#include "coupling/drag/wen_yu_drag.hpp"
 
 namespace parcelflow::coupling {
 

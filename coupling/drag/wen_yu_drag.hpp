@@ -6,7 +6,7 @@
 //   Re = a_g rho_g |u - v| d_p / mu,  C_D = 24/Re (1 + 0.15 Re^0.687) (Re < 1000), 0.44 otherwise.
 // Computed here as K = beta / a_s = 3/4 (C_D |u - v|) rho_g a_g^-1.65 / d_p.
 // Stokes limit (a_g -> 1, Re -> 0): V_p K -> 3 pi mu d_p.
-#include "drag_input.hpp"
+#include "coupling/drag/drag_input.hpp"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "cell_exchange.h"
+#include "coupling/exchange/cell_exchange.h"
 
 #include <mpi.h>
 

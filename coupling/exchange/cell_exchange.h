@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "cell_owner_map.h"
+#include "coupling/exchange/cell_owner_map.h"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "cell_owner_map.h"
+#include "coupling/exchange/cell_owner_map.h"
 
 #include <numeric>
 #include <string>

@@ -1,4 +1,4 @@
-#include "bed_pressure_drop_monitor.h"
+#include "coupling/monitors/bed_pressure_drop_monitor.h"
 
 namespace parcelflow::coupling {
 

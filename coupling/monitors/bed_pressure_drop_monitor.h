@@ -3,8 +3,8 @@
 // lower plane's layer (the drop also holds the gas's own rho_g g dz).
 #pragma once
 
-#include "monitor.h"
-#include "plane_averages.h"
+#include "coupling/monitors/monitor.h"
+#include "coupling/monitors/plane_averages.h"
 
 namespace parcelflow::coupling {
 

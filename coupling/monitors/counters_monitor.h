@@ -2,7 +2,7 @@
 // run, and lost_parcels: parcels LIGGGHTS no longer has (for example under `thermo_modify lost ignore`).
 #pragma once
 
-#include "monitor.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

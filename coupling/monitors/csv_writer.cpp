@@ -1,4 +1,4 @@
-#include "csv_writer.h"
+#include "coupling/monitors/csv_writer.h"
 
 #include <unistd.h>
 

@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "monitor.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

@@ -4,7 +4,7 @@
 // bounds in every step) of the last gas step.
 #pragma once
 
-#include "monitor.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

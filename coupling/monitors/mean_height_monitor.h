@@ -2,7 +2,7 @@
 // without parcels); the segregation of a bed of two size classes is read from them.
 #pragma once
 
-#include "monitor.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

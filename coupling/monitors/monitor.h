@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "cfd/solver/gas_solver.hpp"
-#include "dem_parcels.h"
-#include "run_counters.h"
+#include "coupling/dem/dem_parcels.h"
+#include "coupling/run/run_counters.h"
 
 namespace parcelflow::coupling {
 

@@ -1,14 +1,14 @@
-#include "monitor_registry.h"
+#include "coupling/monitors/monitor_registry.h"
 
 #include <cmath>
 
-#include "bed_pressure_drop_monitor.h"
-#include "counters_monitor.h"
-#include "gas_fraction_extremes_monitor.h"
-#include "gas_step_monitor.h"
-#include "mean_height_monitor.h"
-#include "pressure_planes_monitor.h"
-#include "reinjection_monitor.h"
+#include "coupling/monitors/bed_pressure_drop_monitor.h"
+#include "coupling/monitors/counters_monitor.h"
+#include "coupling/monitors/gas_fraction_extremes_monitor.h"
+#include "coupling/monitors/gas_step_monitor.h"
+#include "coupling/monitors/mean_height_monitor.h"
+#include "coupling/monitors/pressure_planes_monitor.h"
+#include "coupling/monitors/reinjection_monitor.h"
 
 namespace parcelflow::coupling {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "cfd/solver/gas_settings.hpp"
-#include "coupling_settings.h"
-#include "monitor.h"
+#include "coupling/run/coupling_settings.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

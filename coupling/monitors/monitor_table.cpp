@@ -1,8 +1,8 @@
-#include "monitor_table.h"
+#include "coupling/monitors/monitor_table.h"
 
 #include <mpi.h>
 
-#include "broadcast_text.h"
+#include "coupling/run/broadcast_text.h"
 #include "cfd/base/config_error.hpp"
 #include "cfd/base/internal_error.hpp"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "csv_writer.h"
-#include "monitor.h"
+#include "coupling/monitors/csv_writer.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

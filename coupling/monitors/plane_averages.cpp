@@ -1,4 +1,4 @@
-#include "plane_averages.h"
+#include "coupling/monitors/plane_averages.h"
 
 #include <mpi.h>
 

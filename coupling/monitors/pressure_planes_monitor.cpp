@@ -1,4 +1,4 @@
-#include "pressure_planes_monitor.h"
+#include "coupling/monitors/pressure_planes_monitor.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -3,8 +3,8 @@
 // that contains it (plane_averages.h).
 #pragma once
 
-#include "monitor.h"
-#include "plane_averages.h"
+#include "coupling/monitors/monitor.h"
+#include "coupling/monitors/plane_averages.h"
 
 namespace parcelflow::coupling {
 

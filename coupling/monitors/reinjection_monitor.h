@@ -4,8 +4,8 @@
 // parcels the run started with (tests/regression/plugins checks it at every step).
 #pragma once
 
-#include "fix_parcel_reinject.h"
-#include "monitor.h"
+#include "liggghts_plugins/fix_parcel_reinject.h"
+#include "coupling/monitors/monitor.h"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "parcel_writer.h"
+#include "coupling/output/parcel_writer.h"
 
 #include <hdf5.h>
 

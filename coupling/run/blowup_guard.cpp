@@ -1,9 +1,9 @@
-#include "blowup_guard.h"
+#include "coupling/run/blowup_guard.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "broadcast_text.h"
+#include "coupling/run/broadcast_text.h"
 #include "cfd/base/number_text.hpp"
 
 namespace parcelflow::coupling {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "cfd/solver/gas_solver.hpp"
-#include "coupling_settings.h"
+#include "coupling/run/coupling_settings.h"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "case_reader.h"
+#include "coupling/run/case_reader.h"
 
 #include <cmath>
 #include <filesystem>
@@ -7,7 +7,7 @@
 
 #include "cfd/base/config_error.hpp"
 #include "cfd/base/number_text.hpp"
-#include "drag_law.hpp"
+#include "coupling/drag/drag_law.hpp"
 #include "cfd/io/yaml_duplicate_keys.hpp"
 #include "cfd/io/yaml_section.hpp"
 

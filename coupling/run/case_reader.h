@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "coupling_settings.h"
+#include "coupling/run/coupling_settings.h"
 #include "cfd/solver/gas_config.hpp"
 
 namespace parcelflow::coupling {

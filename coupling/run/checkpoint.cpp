@@ -1,4 +1,4 @@
-#include "checkpoint.h"
+#include "coupling/run/checkpoint.h"
 
 #include <mpi.h>
 #include <yaml-cpp/yaml.h>
@@ -10,7 +10,7 @@
 #include <fstream>
 #include <random>
 
-#include "broadcast_text.h"
+#include "coupling/run/broadcast_text.h"
 #include "cfd/base/config_error.hpp"
 #include "cfd/io/hdf5_file.hpp"
 #include "cfd/base/number_text.hpp"

@@ -1,5 +1,5 @@
 // Checkpoints of a coupled run (DESIGN section 10). One checkpoint is one folder
-//   OUTPUT/checkpoints/step_<gas step>/  dem.restart (LIGGGHTS write_restart), gas.h5 (cfd/gas_checkpoint.hpp),
+//   OUTPUT/checkpoints/step_<gas step>/  dem.restart (LIGGGHTS write_restart), gas.h5 (cfd/output/gas_checkpoint.hpp),
 //                                        loop.yaml (the loop's state, the case's settings, the id)
 // under one id ("<gas step>-<random hex>"): gas.h5 carries it as an attribute, loop.yaml names it and the
 // size and FNV-1a hash of dem.restart, so parts of two checkpoints are never combined. The folder is written
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "run_counters.h"
+#include "coupling/run/run_counters.h"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "class_collision_exchange.h"
+#include "coupling/run/class_collision_exchange.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,8 +16,8 @@
 
 #include <vector>
 
-#include "class_collision_drag.hpp"
-#include "parcel_mesh_coupler.h"
+#include "coupling/drag/class_collision_drag.hpp"
+#include "coupling/run/parcel_mesh_coupler.h"
 
 namespace parcelflow::coupling {
 

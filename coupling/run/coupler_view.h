@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "cell_owner_map.h"
+#include "coupling/exchange/cell_owner_map.h"
 #include "cfd/mesh/mesh.hpp"
-#include "parcel_mesh_coupler.h"
+#include "coupling/run/parcel_mesh_coupler.h"
 
 namespace parcelflow::coupling {
 

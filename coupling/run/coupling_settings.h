@@ -35,7 +35,7 @@ struct KernelSettings {
   // at walls (the background box's faces, cells without fluid, cut cells' cuts): "truncate" (the part beyond a
   // wall is dropped before the weights are renormalised) or "reflect" (image parcels behind the wall)
   std::string boundary = "truncate";
-  // L [m]: the deposited solids fraction is smoothed by implicit diffusion over L (cfd/diffusion_smoother.hpp:
+  // L [m]: the deposited solids fraction is smoothed by implicit diffusion over L (cfd/fv/diffusion_smoother.hpp:
   // conservative, no flux through the boundaries); 0: not smoothed
   double smoothing_length = 0.0;
 };

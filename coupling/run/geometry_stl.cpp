@@ -1,8 +1,8 @@
-#include "geometry_stl.h"
+#include "coupling/run/geometry_stl.h"
 
 #include <filesystem>
 
-#include "broadcast_text.h"
+#include "coupling/run/broadcast_text.h"
 #include "cfd/geometry/cartesian_background.hpp"
 #include "cfd/base/config_error.hpp"
 #include "cfd/geometry/stl_writer.hpp"

@@ -1,7 +1,7 @@
 // The LIGGGHTS variable geometry_stl (issue 31, "geometry once"): case.yaml's `geometry` as one closed surface
 // in an ASCII STL file in the output folder, written before the LIGGGHTS script runs, so that a script's
 // `fix mesh/surface file ${geometry_stl}` gives the parcels the walls the gas has, from the same primitives or
-// STL files (cfd/surface_from_geometry.hpp: round primitives as 128-gons; no geometry: the mesh's box).
+// STL files (cfd/geometry/surface_from_geometry.hpp: round primitives as 128-gons; no geometry: the mesh's box).
 #pragma once
 
 #include <mpi.h>

@@ -1,4 +1,4 @@
-#include "output_folder.h"
+#include "coupling/run/output_folder.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -13,7 +13,7 @@
 #include <system_error>
 #include <vector>
 
-#include "broadcast_text.h"
+#include "coupling/run/broadcast_text.h"
 #include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling {

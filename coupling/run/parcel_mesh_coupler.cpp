@@ -1,4 +1,4 @@
-#include "parcel_mesh_coupler.h"
+#include "coupling/run/parcel_mesh_coupler.h"
 
 #include <mpi.h>
 

@@ -15,12 +15,12 @@
 
 #include <vector>
 
-#include "background_grid.hpp"
-#include "box_stencils.hpp"
-#include "cell_exchange.h"
-#include "parcel_drag.hpp"
-#include "stencil.hpp"
-#include "transfer_kernel.hpp"
+#include "coupling/transfer/background_grid.hpp"
+#include "coupling/transfer/box_stencils.hpp"
+#include "coupling/exchange/cell_exchange.h"
+#include "coupling/drag/parcel_drag.hpp"
+#include "coupling/transfer/stencil.hpp"
+#include "coupling/transfer/transfer_kernel.hpp"
 
 namespace parcelflow::coupling {
 

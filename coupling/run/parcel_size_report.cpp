@@ -1,4 +1,4 @@
-#include "parcel_size_report.h"
+#include "coupling/run/parcel_size_report.h"
 
 #include <cmath>
 

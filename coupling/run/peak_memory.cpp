@@ -1,4 +1,4 @@
-#include "peak_memory.h"
+#include "coupling/run/peak_memory.h"
 
 #include <sys/resource.h>
 

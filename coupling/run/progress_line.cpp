@@ -1,4 +1,4 @@
-#include "progress_line.h"
+#include "coupling/run/progress_line.h"
 
 #include <algorithm>
 #include <cmath>

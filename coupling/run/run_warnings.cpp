@@ -1,4 +1,4 @@
-#include "run_warnings.h"
+#include "coupling/run/run_warnings.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,10 +13,10 @@
 #include <string>
 
 #include "cfd/solver/gas_solver.hpp"
-#include "cell_owner_map.h"
-#include "parcel_mesh_coupler.h"
-#include "parcel_size_report.h"
-#include "run_counters.h"
+#include "coupling/exchange/cell_owner_map.h"
+#include "coupling/run/parcel_mesh_coupler.h"
+#include "coupling/run/parcel_size_report.h"
+#include "coupling/run/run_counters.h"
 
 namespace parcelflow::coupling {
 

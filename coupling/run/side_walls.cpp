@@ -1,4 +1,4 @@
-#include "side_walls.h"
+#include "coupling/run/side_walls.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "stop_signal.h"
+#include "coupling/run/stop_signal.h"
 
 #include <unistd.h>
 

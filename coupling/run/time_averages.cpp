@@ -1,4 +1,4 @@
-#include "time_averages.h"
+#include "coupling/run/time_averages.h"
 
 #include <cmath>
 #include <cstdio>

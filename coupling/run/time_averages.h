@@ -15,7 +15,7 @@
 
 #include "cfd/output/field_writer.hpp"
 #include "cfd/solver/gas_solver.hpp"
-#include "plane_averages.h"
+#include "coupling/monitors/plane_averages.h"
 
 namespace parcelflow::coupling {
 

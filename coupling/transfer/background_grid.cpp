@@ -1,4 +1,4 @@
-#include "background_grid.hpp"
+#include "coupling/transfer/background_grid.hpp"
 
 #include <stdexcept>
 #include <string>

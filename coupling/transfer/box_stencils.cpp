@@ -1,4 +1,4 @@
-#include "box_stencils.hpp"
+#include "coupling/transfer/box_stencils.hpp"
 
 #include <algorithm>
 #include <climits>

@@ -1,4 +1,4 @@
-#include "centroid_kernel.hpp"
+#include "coupling/transfer/centroid_kernel.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -6,8 +6,8 @@
 // Reference: MFIX-Exa "centroid" deposition scheme; Crowe et al., PSI-CELL, J. Fluids Eng. 99 (1977).
 #include <cmath>
 
-#include "background_grid.hpp"
-#include "stencil.hpp"
+#include "coupling/transfer/background_grid.hpp"
+#include "coupling/transfer/stencil.hpp"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "gaussian_kernel.hpp"
+#include "coupling/transfer/gaussian_kernel.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -28,8 +28,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "background_grid.hpp"
-#include "stencil.hpp"
+#include "coupling/transfer/background_grid.hpp"
+#include "coupling/transfer/stencil.hpp"
 
 namespace parcelflow::coupling {
 

@@ -1,4 +1,4 @@
-#include "transfer_kernel.hpp"
+#include "coupling/transfer/transfer_kernel.hpp"
 
 #include <stdexcept>
 

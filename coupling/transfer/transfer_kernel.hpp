@@ -7,8 +7,8 @@
 #include <variant>
 #include <vector>
 
-#include "centroid_kernel.hpp"
-#include "gaussian_kernel.hpp"
+#include "coupling/transfer/centroid_kernel.hpp"
+#include "coupling/transfer/gaussian_kernel.hpp"
 
 namespace parcelflow::coupling {
 

@@ -10,9 +10,9 @@
 #include <type_traits>
 #include <variant>
 
-#include "background_grid.hpp"
-#include "stencil.hpp"
-#include "transfer_kernel.hpp"
+#include "coupling/transfer/background_grid.hpp"
+#include "coupling/transfer/stencil.hpp"
+#include "coupling/transfer/transfer_kernel.hpp"
 
 namespace parcelflow::coupling::test {
 

@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "box_stencils.hpp"
-#include "ghost_deposition_oracle.hpp"
+#include "coupling/transfer/box_stencils.hpp"
+#include "tests/support/ghost_deposition_oracle.hpp"
 
 using namespace parcelflow::coupling;
 using Clock = std::chrono::steady_clock;

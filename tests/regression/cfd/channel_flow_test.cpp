@@ -7,7 +7,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "gas_case.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

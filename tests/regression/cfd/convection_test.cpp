@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "gas_case.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

@@ -17,8 +17,8 @@
 #include <memory>
 
 #include "cfd/geometry/solid_surface.hpp"
-#include "cut_cell_test_surfaces.hpp"
-#include "gas_case.hpp"
+#include "tests/support/cut_cell_test_surfaces.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

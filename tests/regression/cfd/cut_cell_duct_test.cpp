@@ -20,8 +20,8 @@
 #include <unistd.h>
 
 #include "cfd/solver/gas_config.hpp"
-#include "cut_cell_test_surfaces.hpp"
-#include "gas_case.hpp"
+#include "tests/support/cut_cell_test_surfaces.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "cfd/geometry/surface_from_geometry.hpp"
-#include "gas_case.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

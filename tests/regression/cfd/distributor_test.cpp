@@ -15,7 +15,7 @@
 #include <string>
 
 #include "cfd/base/config_error.hpp"
-#include "gas_case.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

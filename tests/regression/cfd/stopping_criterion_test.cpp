@@ -12,7 +12,7 @@
 #include <functional>
 #include <iostream>
 
-#include "gas_case.hpp"
+#include "tests/regression/cfd/gas_case.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::testing;

@@ -1,4 +1,4 @@
-#include "liggghts_session.h"
+#include "tests/regression/plugins/liggghts_session.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

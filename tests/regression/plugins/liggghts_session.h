@@ -15,7 +15,7 @@
 #include "input.h"
 #include "lammps.h"
 #include "modify.h"
-#include "register_styles.h"
+#include "liggghts_plugins/register_styles.h"
 
 namespace parcelflow::plugins::testing {
 

@@ -6,7 +6,7 @@
 
 #include "input.h"
 #include "lammps.h"
-#include "register_styles.h"
+#include "liggghts_plugins/register_styles.h"
 
 int main(int argc, char** argv)
 {

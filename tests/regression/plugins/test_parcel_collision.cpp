@@ -10,9 +10,9 @@
 #include <cmath>
 #include <functional>
 
-#include "fix_parcel.h"
-#include "liggghts_session.h"
-#include "parcel_math.h"
+#include "liggghts_plugins/fix_parcel.h"
+#include "tests/regression/plugins/liggghts_session.h"
+#include "liggghts_plugins/parcel_math.h"
 #include "update.h"
 
 using namespace parcelflow::plugins;

@@ -9,8 +9,8 @@
 
 #include <cmath>
 
-#include "fix_parcel.h"
-#include "liggghts_session.h"
+#include "liggghts_plugins/fix_parcel.h"
+#include "tests/regression/plugins/liggghts_session.h"
 
 using namespace parcelflow::plugins;
 using namespace parcelflow::plugins::testing;

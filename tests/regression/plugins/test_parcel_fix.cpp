@@ -9,11 +9,11 @@
 #include <sstream>
 
 #include "atom.h"
-#include "fix_parcel.h"
-#include "fix_parcel_implicit_drag.h"
+#include "liggghts_plugins/fix_parcel.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
 #include "fix_property_global.h"
-#include "liggghts_session.h"
-#include "size_class_sequence.h"
+#include "tests/regression/plugins/liggghts_session.h"
+#include "liggghts_plugins/size_class_sequence.h"
 #include "update.h"
 
 using namespace parcelflow::plugins;

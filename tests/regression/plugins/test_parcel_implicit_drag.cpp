@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "fix_parcel_implicit_drag.h"
-#include "liggghts_session.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
+#include "tests/regression/plugins/liggghts_session.h"
 #include "update.h"
 
 using namespace parcelflow::plugins;

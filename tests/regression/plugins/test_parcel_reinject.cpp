@@ -14,10 +14,10 @@
 #include <set>
 
 #include "domain.h"
-#include "fix_parcel.h"
-#include "fix_parcel_implicit_drag.h"
-#include "fix_parcel_reinject.h"
-#include "liggghts_session.h"
+#include "liggghts_plugins/fix_parcel.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
+#include "liggghts_plugins/fix_parcel_reinject.h"
+#include "tests/regression/plugins/liggghts_session.h"
 #include "update.h"
 
 using namespace parcelflow::plugins;

@@ -3,7 +3,7 @@ every few steps, three times at different moments: monitors.csv holds only compl
 the output folder opens with h5py (a file is written as NAME.partial and renamed once complete), every file
 an XDMF index lists exists and opens, the complete checkpoints are readable, and the run continues from the
 newest of them. It runs with the named semaphore that Open MPI's OMPIO takes to open a file called
-gas.h5.partial present and taken, as a killed run leaves it: no run may wait on it (cfd/mpi_io_defaults.hpp)."""
+gas.h5.partial present and taken, as a killed run leaves it: no run may wait on it (cfd/io/mpi_io_defaults.hpp)."""
 import ctypes
 import errno
 import glob

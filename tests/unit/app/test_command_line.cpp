@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "command_line.h"
+#include "coupling/app/command_line.h"
 
 namespace pc = parcelflow::coupling;
 

@@ -17,7 +17,7 @@
 #include "cfd/linear/hypre_library.hpp"
 #include "cfd/base/internal_error.hpp"
 #include "cfd/linear/krylov_solver.hpp"
-#include "pressure_problem.hpp"
+#include "tests/unit/cfd/pressure_problem.hpp"
 
 using namespace parcelflow::cfd;
 

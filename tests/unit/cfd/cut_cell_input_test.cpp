@@ -14,7 +14,7 @@
 #include "cfd/geometry/cut_cell_geometry.hpp"
 #include "cfd/solver/gas_config.hpp"
 #include "cfd/geometry/stl_reader.hpp"
-#include "cut_cell_test_surfaces.hpp"
+#include "tests/support/cut_cell_test_surfaces.hpp"
 
 using namespace parcelflow::cfd;
 using namespace parcelflow::cfd::test;

@@ -1,4 +1,4 @@
-// The gas part of a checkpoint (cfd/gas_checkpoint.hpp): a solver restored from the file has exactly the
+// The gas part of a checkpoint (cfd/output/gas_checkpoint.hpp): a solver restored from the file has exactly the
 // state of the one that wrote it, and the next step of both is the same to the last bit (the writer builds
 // a new pressure preconditioner too, as the coupled loop makes it); a file of another checkpoint is refused
 // naming checkpoint_id. On 1, 2 and 3 ranks, on a box (boundary faces are found by their cell and centre: its

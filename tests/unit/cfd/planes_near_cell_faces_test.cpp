@@ -1,4 +1,4 @@
-// planesNearCellFaces (cfd/planes_near_cell_faces.hpp): the full FCC case's lid 4e-8 m above a cell face is named
+// planesNearCellFaces (cfd/mesh/planes_near_cell_faces.hpp): the full FCC case's lid 4e-8 m above a cell face is named
 // with its distance; on the face (the case's height since 2026-12-07), in the middle of a cell or further than
 // small_cell_fraction of a cell it is not; a box's planes along every axis are checked.
 #include <gtest/gtest.h>

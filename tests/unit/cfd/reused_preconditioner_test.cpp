@@ -16,7 +16,7 @@
 #include "cfd/solver/gas_config.hpp"
 #include "cfd/linear/krylov_solver.hpp"
 #include "cfd/linear/reused_preconditioner.hpp"
-#include "pressure_problem.hpp"
+#include "tests/unit/cfd/pressure_problem.hpp"
 
 using namespace parcelflow::cfd;
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "case_reader.h"
+#include "coupling/run/case_reader.h"
 #include "cfd/base/config_error.hpp"
 
 namespace parcelflow::coupling::test {

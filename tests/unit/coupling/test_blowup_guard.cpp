@@ -11,7 +11,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "blowup_guard.h"
+#include "coupling/run/blowup_guard.h"
 #include "cfd/solver/gas_config.hpp"
 
 using namespace parcelflow;

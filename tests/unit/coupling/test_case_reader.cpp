@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
-#include "case_reader.h"
+#include "coupling/run/case_reader.h"
 #include "cfd/base/config_error.hpp"
 #include "tests/unit/coupling/case_folder_error.hpp"
 

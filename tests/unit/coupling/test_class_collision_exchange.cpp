@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "class_collision_exchange.h"
+#include "coupling/run/class_collision_exchange.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;

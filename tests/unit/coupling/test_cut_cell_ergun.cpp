@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "cfd/solver/gas_solver.hpp"
-#include "coupler_view.h"
+#include "coupling/run/coupler_view.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;

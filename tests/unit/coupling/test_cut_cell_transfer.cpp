@@ -11,8 +11,8 @@
 #include <random>
 
 #include "cfd/mesh/mesh_builder.hpp"
-#include "parcel_mesh_coupler.h"
-#include "coupler_view.h"
+#include "coupling/run/parcel_mesh_coupler.h"
+#include "coupling/run/coupler_view.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;

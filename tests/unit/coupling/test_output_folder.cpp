@@ -9,9 +9,9 @@
 #include <fstream>
 #include <string>
 
-#include "broadcast_text.h"
+#include "coupling/run/broadcast_text.h"
 #include "cfd/base/config_error.hpp"
-#include "output_folder.h"
+#include "coupling/run/output_folder.h"
 
 namespace pc = parcelflow::coupling;
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <random>
 
-#include "parcel_mesh_coupler.h"
+#include "coupling/run/parcel_mesh_coupler.h"
 #include "tests/unit/coupling/transfer_conservation.hpp"
 
 namespace pc = parcelflow::coupling;

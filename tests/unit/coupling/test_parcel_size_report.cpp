@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "parcel_size_report.h"
+#include "coupling/run/parcel_size_report.h"
 
 namespace pc = parcelflow::coupling;
 

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <vector>
 
-#include "peak_memory.h"
+#include "coupling/run/peak_memory.h"
 
 using namespace parcelflow::coupling;
 

@@ -6,7 +6,7 @@
 
 #include "cfd/base/config_error.hpp"
 #include "tests/unit/coupling/box_mesh.hpp"
-#include "plane_averages.h"
+#include "coupling/monitors/plane_averages.h"
 
 using namespace parcelflow;
 

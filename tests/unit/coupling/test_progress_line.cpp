@@ -2,7 +2,7 @@
 // a run continued from a checkpoint at 45 s that took 60 s of wall time for 1 s has 4 s, 240 s, left.
 #include <gtest/gtest.h>
 
-#include "progress_line.h"
+#include "coupling/run/progress_line.h"
 
 using namespace parcelflow::coupling;
 

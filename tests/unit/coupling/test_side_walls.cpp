@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "tests/unit/coupling/box_mesh.hpp"
-#include "side_walls.h"
+#include "coupling/run/side_walls.h"
 
 using namespace parcelflow;
 

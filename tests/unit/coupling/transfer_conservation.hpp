@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "parcel_mesh_coupler.h"
+#include "coupling/run/parcel_mesh_coupler.h"
 
 namespace parcelflow::coupling::test {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "class_collision_drag.hpp"
+#include "coupling/drag/class_collision_drag.hpp"
 
 namespace pc = parcelflow::coupling;
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "drag_law.hpp"
-#include "drag_test_context.hpp"
+#include "coupling/drag/drag_law.hpp"
+#include "tests/unit/drag/drag_test_context.hpp"
 
 using namespace parcelflow::coupling;
 

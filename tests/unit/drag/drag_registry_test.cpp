@@ -5,8 +5,8 @@
 #include <limits>
 #include <vector>
 
-#include "drag_test_context.hpp"
-#include "parcel_drag.hpp"
+#include "tests/unit/drag/drag_test_context.hpp"
+#include "coupling/drag/parcel_drag.hpp"
 #include "cfd/base/config_error.hpp"
 #include "cfd/base/internal_error.hpp"
 

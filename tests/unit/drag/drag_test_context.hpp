@@ -1,7 +1,7 @@
 #pragma once
 // The per-case constants the drag tests give makeDragLaw: what the filtered law needs (the others ignore
 // them), here FCC in 75 mm cells unless a filter size is given.
-#include "drag_input.hpp"
+#include "coupling/drag/drag_input.hpp"
 
 namespace parcelflow::coupling::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "case_reader.h"
+#include "coupling/run/case_reader.h"
 #include "cfd/base/config_error.hpp"
 #include "tests/unit/coupling/case_folder_error.hpp"
 

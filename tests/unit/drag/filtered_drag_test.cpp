@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cfd/base/internal_error.hpp"
-#include "drag_test_context.hpp"
-#include "parcel_drag.hpp"
+#include "tests/unit/drag/drag_test_context.hpp"
+#include "coupling/drag/parcel_drag.hpp"
 
 using namespace parcelflow::coupling;
 

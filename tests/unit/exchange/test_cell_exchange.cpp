@@ -4,7 +4,7 @@
 #include <random>
 #include <set>
 
-#include "cell_exchange.h"
+#include "coupling/exchange/cell_exchange.h"
 
 namespace pc = parcelflow::coupling;
 

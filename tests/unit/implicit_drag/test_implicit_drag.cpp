@@ -11,11 +11,11 @@
 #include <string>
 
 #include "atom.h"
-#include "fix_parcel_implicit_drag.h"
+#include "liggghts_plugins/fix_parcel_implicit_drag.h"
 #include "input.h"
 #include "lammps.h"
 #include "modify.h"
-#include "register_styles.h"
+#include "liggghts_plugins/register_styles.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "parcel_writer.h"
+#include "coupling/output/parcel_writer.h"
 
 using parcelflow::coupling::ParcelSnapshot;
 using parcelflow::coupling::ParcelWriter;

@@ -7,7 +7,7 @@
 
 #include "cfd/output/field_writer.hpp"
 #include "cfd/mesh/mesh_builder.hpp"
-#include "parcel_writer.h"
+#include "coupling/output/parcel_writer.h"
 
 using namespace parcelflow;
 

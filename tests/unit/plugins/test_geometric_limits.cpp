@@ -1,7 +1,7 @@
 // fix parcel's start-up warning of the geometric limits no contact scaling keeps (geometric_limits.h).
 #include <gtest/gtest.h>
 
-#include "geometric_limits.h"
+#include "liggghts_plugins/geometric_limits.h"
 
 using namespace parcelflow::plugins;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "parcel_math.h"
+#include "liggghts_plugins/parcel_math.h"
 
 using namespace parcelflow::plugins;
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "parcel_settings.h"
-#include "reinject_settings.h"
+#include "liggghts_plugins/parcel_settings.h"
+#include "liggghts_plugins/reinject_settings.h"
 
 using namespace parcelflow::plugins;
 

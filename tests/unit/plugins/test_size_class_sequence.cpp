@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "size_class_sequence.h"
+#include "liggghts_plugins/size_class_sequence.h"
 
 using namespace parcelflow::plugins;
 

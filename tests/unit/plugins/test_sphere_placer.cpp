@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "sphere_placer.h"
+#include "liggghts_plugins/sphere_placer.h"
 
 using namespace parcelflow::plugins;
 

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <random>
 
-#include "box_stencils.hpp"
-#include "ghost_deposition_oracle.hpp"
-#include "test_grid.hpp"
+#include "coupling/transfer/box_stencils.hpp"
+#include "tests/support/ghost_deposition_oracle.hpp"
+#include "tests/unit/transfer/test_grid.hpp"
 
 using namespace parcelflow::coupling;
 using namespace parcelflow::coupling::test;

@@ -9,9 +9,9 @@
 #include <random>
 #include <set>
 
-#include "ghost_deposition_oracle.hpp"
-#include "test_grid.hpp"
-#include "transfer_kernel.hpp"
+#include "tests/support/ghost_deposition_oracle.hpp"
+#include "tests/unit/transfer/test_grid.hpp"
+#include "coupling/transfer/transfer_kernel.hpp"
 #include "cfd/base/config_error.hpp"
 #include "cfd/base/internal_error.hpp"
 

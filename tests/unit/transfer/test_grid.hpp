@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "background_grid.hpp"
+#include "coupling/transfer/background_grid.hpp"
 
 namespace parcelflow::coupling::test {
 
