@@ -129,13 +129,15 @@ EnergyStepReport GasEnergy::advance(double dt, const ScalarField& alpha, const S
     }
   }
 
+  // BoomerAMG (the default) also keeps BiCGStab from breaking down on convection-dominated rows, where
+  // upwind carries the residual downstream, orthogonal to the shadow residual (seen with Jacobi).
   const KrylovSolver solver(A, settings_.solver);
   const SolveStats stats = solver.bicgstab(T_, b, strictRule(settings_.solver));
-
-  // The heat flows at the new temperature, as the equation balanced them.
   EnergyStepReport report;
   report.iterations = stats.iterations;
   report.converged = stats.converged;
+
+  // The heat flows at the new temperature, as the equation balanced them.
   double convection = 0.0, wall = 0.0, exchange = 0.0;
   for (int f = 0; f < m.nBoundaryFaces(); ++f) {
     const int c = m.boundaryCell(f);

@@ -35,7 +35,7 @@ struct GasThermalSettings {
   double conductivity = 0.026;      // k [W/(m K)]
   double initialTemperature = 293.15;
   std::vector<PatchTemperature> patches;  // every velocity inlet needs one; outlets default to the initial T
-  LinearSolverSettings solver{1e-12, 1e-300, 1000, PreconditionerType::Jacobi, 1, StoppingCriterion::Strict,
+  LinearSolverSettings solver{1e-12, 1e-300, 1000, PreconditionerType::BoomerAmg, 1, StoppingCriterion::Strict,
                               1e-6, 0.0, 0.0};
 };
 
@@ -44,7 +44,7 @@ struct EnergyStepReport {
   double boundaryConvection = 0.0;  // carried in (inlets, backflow) minus carried out through the patches
   double wallConduction = 0.0;      // through fixed-temperature walls
   double exchange = 0.0;            // from the parcels: sum H (T_p - T) at the new temperature
-  int iterations = 0;
+  int iterations = 0;  // BiCGStab iterations
   bool converged = true;
 };
 
