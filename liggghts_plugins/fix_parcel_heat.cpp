@@ -138,8 +138,8 @@ void FixParcelHeat::final_integrate()
   for (int i = 0; i < nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     double* d = data_[i];
-    const double t_new = implicit_heat_step(heat_capacity(i), T[i], dt, d[CONDUCTANCE], d[GAS_TEMPERATURE], 0.0);
-    d[HEAT_RECEIVED] += dt * d[CONDUCTANCE] * (d[GAS_TEMPERATURE] - t_new);
+    const double t_new = implicit_heat_step(heat_capacity(i), T[i], dt, d[CONDUCTANCE], d[GAS_TEMPERATURE], d[SOURCE]);
+    d[HEAT_RECEIVED] += dt * (d[CONDUCTANCE] * (d[GAS_TEMPERATURE] - t_new) + d[SOURCE]);
     T[i] = t_new;
   }
 }

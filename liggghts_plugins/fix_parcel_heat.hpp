@@ -1,15 +1,16 @@
 // fix ID group parcel/heat heat_capacity c_1 ... c_N [initial_temperature T0]
 //
-// The temperature of gas-coupled parcels. Each parcel carries the gas temperature at its position T_g
-// and its gas-particle conductance H = np h pi d_p^2 [W/K] (columns set by the coupling layer between DEM
-// runs; they migrate with atoms and are written to restart files). Every DEM step, after LIGGGHTS' own
-// heat integration if there is one, the fix advances
-//     M c dT/dt = H (T_g - T) + Q
+// The temperature of gas-coupled parcels. Each parcel carries the gas temperature at its position T_g,
+// its gas-particle conductance H = np h pi d_p^2 [W/K] and a heat source S [W] (columns set by the
+// coupling layer between DEM runs; they migrate with atoms and are written to restart files). Every DEM
+// step, after LIGGGHTS' own heat integration if there is one, the fix advances
+//     M c dT/dt = H (T_g - T) + S + Q
 // by implicit Euler (parcel_heat_step.hpp): stable and free of overshoot for any dt H/(M c). The
 // temperature is LIGGGHTS' per-atom `Temp` (fix property/atom), so fix heat/gran/conduction, defined
-// BEFORE this fix, adds the contact conduction Q. Per-atom output (dump f_ID[1..3]): T_g, H and the heat
-// received from the gas since the coupling layer last zeroed it [J]; the temperature is f_Temp. The
-// global scalar is the group's heat content sum M c T [J]. Documentation: fix_parcel_heat.md.
+// BEFORE this fix, adds the contact conduction Q. Per-atom output (dump f_ID[1..4]): T_g, H, S and the heat
+// received from the gas, sum dt (H (T_g - T_new) + S), since the coupling layer last zeroed it [J]; the
+// temperature is f_Temp. The global scalar is the group's heat content sum M c T [J].
+// Documentation: fix_parcel_heat.md.
 #pragma once
 
 #include <vector>
@@ -25,7 +26,7 @@ namespace parcelflow::plugins {
 
 class FixParcelHeat : public PerAtomColumnsFix {
  public:
-  enum Column { GAS_TEMPERATURE = 0, CONDUCTANCE, HEAT_RECEIVED, NCOLUMNS };
+  enum Column { GAS_TEMPERATURE = 0, CONDUCTANCE, SOURCE, HEAT_RECEIVED, NCOLUMNS };
 
   FixParcelHeat(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg);
 

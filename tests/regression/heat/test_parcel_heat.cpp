@@ -147,6 +147,37 @@ TEST(ParcelHeat, StepFarAboveTheResponseTimeNeitherOvershootsNorDiverges)
   EXPECT_LT(parcel_vs_particle, 1e-9);
 }
 
+TEST(ParcelHeat, HeldSourceAddsExactlyItsHeat)
+{
+  // S alone (H = 0): M c dT = dt S every step, and the heat received is n dt S; with H as well the parcel
+  // settles at T_g + S/H.
+  const double dp = 1e-4, dt = 1e-5, S = 2e-4;
+  Session s("none");
+  start(s, dp, dt);
+  auto* fix = s.fix<FixParcelHeat>("heat");
+  LAMMPS_NS::Atom* atom = s.lmp()->atom;
+  const auto h = gunnConductance(dp);
+  for (int i = 0; i < atom->nlocal; ++i) {
+    fix->peratom()[i][FixParcelHeat::SOURCE] = S;
+    fix->peratom()[i][FixParcelHeat::CONDUCTANCE] = atom->tag[i] == 2 ? h[1] : 0.0;
+    fix->peratom()[i][FixParcelHeat::GAS_TEMPERATURE] = kTg;
+  }
+  const double mc = gather(s).v.at(1)[3];
+  s.cmd("run 1000 pre no post no");
+  const Atoms a = gather(s);
+  const double expected = kT0 + 1000 * dt * S / mc;
+  s.cmd("velocity all set 0 0 0");  // at rest: no neighbour-list builds at the long step
+  s.cmd("timestep 1e-3");           // 45 response times in 1000 steps: settled
+  s.cmd("run 1000");
+  const double settled = gather(s).v.at(2)[0];
+  PF_PRINT("[ heat ] held source %.1e W, 1000 steps: T = %.9f K (expected %.9f), heat received %.6e J (expected %.6e); "
+           "with H: %.6f K (T_g + S/H = %.6f K)\n", S, a.v.at(1)[0], expected, a.v.at(1)[2], 1000 * dt * S, settled,
+           kTg + S / h[1]);
+  EXPECT_NEAR(a.v.at(1)[0], expected, 1e-9);
+  EXPECT_NEAR(a.v.at(1)[2], 1000 * dt * S, 1e-15);
+  EXPECT_NEAR(settled, kTg + S / h[1], 1e-6);
+}
+
 TEST(ParcelHeat, RestartContinuesBitForBit)
 {
   const double dp = 1e-4, dt = 1e-5;
