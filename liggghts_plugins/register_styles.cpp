@@ -2,6 +2,7 @@
 
 #include "liggghts_plugins/fix_map_access.h"
 #include "liggghts_plugins/fix_parcel.h"
+#include "liggghts_plugins/fix_parcel_heat.hpp"
 #include "liggghts_plugins/fix_parcel_implicit_drag.h"
 #include "liggghts_plugins/fix_parcel_reinject.h"
 #include "lammps.h"
@@ -23,6 +24,7 @@ void register_styles(LAMMPS_NS::LAMMPS* lmp)
   fixes["parcel"] = &create_fix<FixParcel>;
   fixes["parcel/implicit_drag"] = &create_fix<FixParcelImplicitDrag>;
   fixes["parcel/reinject"] = &create_fix<FixParcelReinject>;
+  fixes["parcel/heat"] = &create_fix<FixParcelHeat>;
 }
 
 }  // namespace parcelflow::plugins
