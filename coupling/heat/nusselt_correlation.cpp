@@ -2,8 +2,8 @@
 
 #include <cstddef>
 
-#include "cfd/config_error.hpp"
-#include "cfd/internal_error.hpp"
+#include "cfd/base/config_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 namespace {

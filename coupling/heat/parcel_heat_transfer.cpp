@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "cfd/internal_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

@@ -4,7 +4,7 @@
 #include <limits>
 #include <utility>
 
-#include "cfd/internal_error.hpp"
+#include "cfd/base/internal_error.hpp"
 
 namespace parcelflow::coupling {
 

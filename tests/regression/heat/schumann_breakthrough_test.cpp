@@ -10,8 +10,8 @@
 #include <cmath>
 #include <memory>
 
-#include "cfd/gas_energy.hpp"
-#include "cfd/mesh_builder.hpp"
+#include "cfd/solver/gas_energy.hpp"
+#include "cfd/mesh/mesh_builder.hpp"
 #include "tests/support/schumann_packed_bed.hpp"
 
 using namespace parcelflow::cfd;

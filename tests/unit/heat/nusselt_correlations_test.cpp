@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "cfd/config_error.hpp"
+#include "cfd/base/config_error.hpp"
 #include "coupling/heat/nusselt_correlation.hpp"
 
 using namespace parcelflow::coupling;
