@@ -46,11 +46,12 @@ def tables(rows):
 
 
 def summary(runs, name):
+    """Mean, lowest and highest of the runs that measured `name`, and how many did."""
     values = [number(r[name]) for r in runs]
     finite = [v for v in values if math.isfinite(v)]
     if not finite:
-        return math.nan, math.nan, math.nan
-    return sum(finite) / len(finite), min(finite), max(finite)
+        return math.nan, math.nan, math.nan, 0
+    return sum(finite) / len(finite), min(finite), max(finite), len(finite)
 
 
 def cell(mean, low, high, seeds):
@@ -75,22 +76,22 @@ def draw(rows, out):
         out.write("| quantity | fine | " + " | ".join(coarse) + " | tolerance |\n")
         out.write("|---" * (len(coarse) + 3) + "|\n")
         for name, (tolerance, unit, _) in QUANTITIES.items():
-            mean, low, high = summary(fine, name)
-            cells = [cell(mean, low, high, len(fine))]
+            mean, low, high, seeds = summary(fine, name)
+            cells = [cell(mean, low, high, seeds)]
             for c in coarse:
-                value, clow, chigh = summary(columns[c], name)
+                value, clow, chigh, cseeds = summary(columns[c], name)
                 if not math.isfinite(value) or not math.isfinite(mean) or mean == 0:
-                    cells.append(cell(value, clow, chigh, len(columns[c])))
+                    cells.append(cell(value, clow, chigh, cseeds))
                     continue
                 difference = value / mean - 1
                 verdict = "" if abs(difference) <= tolerance else " **out**"
-                cells.append(f"{cell(value, clow, chigh, len(columns[c]))} ({100 * difference:+.1f} %){verdict}")
+                cells.append(f"{cell(value, clow, chigh, cseeds)} ({100 * difference:+.1f} %){verdict}")
             label = f"{name} [{unit}]" if unit else name
             out.write(f"| {label} | " + " | ".join(cells) + f" | {100 * tolerance:.0f} % |\n")
         for name in DIAGNOSTICS:
-            cells = [cell(*summary(columns[c], name), len(columns[c])) for c in [fine_name] + coarse]
+            cells = [cell(*summary(columns[c], name)) for c in [fine_name] + coarse]
             out.write(f"| {name} (no tolerance) | " + " | ".join(cells) + " | |\n")
-        wall = [cell(*summary(columns[c], "wall_s"), len(columns[c])) for c in [fine_name] + coarse]
+        wall = [cell(*summary(columns[c], "wall_s")) for c in [fine_name] + coarse]
         out.write("| wall time [s] | " + " | ".join(wall) + " | |\n")
         runs = [r for c in [fine_name] + coarse for r in columns[c]]
         out.write(f"\nRuns: {', '.join(sorted({r['date'] + ' ' + r['commit'] for r in runs}))}; seeds of the fine "
