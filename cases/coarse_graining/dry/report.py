@@ -20,8 +20,8 @@ from collections import defaultdict
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from validate import (BODY_WIDTH_IN_DIAMETERS, OPENING_WIDTH_IN_DIAMETERS, SIZES, TOLERANCE,  # noqa: E402
-                      UNCLAIMED, at_least, claim)
+from validate import (BODY_WIDTH_IN_DIAMETERS, OPENING_WIDTH_IN_DIAMETERS, SIZES,  # noqa: E402
+                      at_least, claim, compare)
 
 COARSE = ("np8_linear", "np27_linear", "np8_none", "np27_none")  # the claimed scaling first
 COLUMN = (("runout", "run-out (L - L0)/L0"), ("wall_height", "final height at the wall / initial"),
@@ -49,14 +49,8 @@ def table(size, rows, out):
         return (number(row["mean"]), number(row["std_percent"])) if row else (math.nan, math.nan)
 
     def line(case, quantity, fine, fine_std, variant, coarse, coarse_std, claimed, within=True):
-        difference = coarse / fine - 1 if fine and math.isfinite(fine) and math.isfinite(coarse) else math.nan
         tolerance = claim(variant, claimed, within)
-        if tolerance in UNCLAIMED:
-            verdict = "-"
-        elif not math.isfinite(difference):
-            verdict = "no (nan)"
-        else:
-            verdict = "yes" if abs(difference) <= TOLERANCE else "no"
+        difference, verdict = compare(fine, coarse, tolerance)
         shown = f"{100 * difference:+.1f} %" if math.isfinite(difference) else "-"
         out.write(f"| {case} | {quantity} | {fine:.4g} | {variant} | {coarse:.4g} | {shown} | {tolerance} | {verdict} "
                   f"| {spread(fine_std)} / {spread(coarse_std)} |\n")

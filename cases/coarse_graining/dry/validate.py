@@ -211,6 +211,17 @@ def claim(variant, quantity_claimed, within_limits=True):
     return f"{TOLERANCE:.0%}" if within_limits else OUTSIDE_THE_RULE
 
 
+def compare(fine, coarse, tolerance):
+    """(coarse / fine - 1, verdict): "-" where the scaling claims nothing, "no (nan)" where there is no
+    difference to judge, else whether it lies within TOLERANCE."""
+    difference = (coarse / fine - 1) if fine and math.isfinite(fine) and math.isfinite(coarse) else math.nan
+    if tolerance in UNCLAIMED:
+        return difference, "-"
+    if not math.isfinite(difference):
+        return difference, "no (nan)"
+    return difference, "yes" if abs(difference) <= TOLERANCE else "no"
+
+
 def table_rows(results, size):
     """The table: one row per quantity and coarse variant."""
     geometry = SIZES[size]
@@ -219,14 +230,8 @@ def table_rows(results, size):
 
     def add(case, quantity, unit, fine_values, variant, coarse_values, claimed, note="", within_limits=True):
         fine, coarse = mean(fine_values), mean(coarse_values)
-        difference = (coarse / fine - 1) if fine and math.isfinite(fine) and math.isfinite(coarse) else math.nan
         tolerance = claim(variant, claimed, within_limits)
-        if tolerance in UNCLAIMED:
-            verdict = "-"
-        elif not math.isfinite(difference):
-            verdict = "no (nan)"
-        else:
-            verdict = "yes" if abs(difference) <= TOLERANCE else "no"
+        difference, verdict = compare(fine, coarse, tolerance)
         rows.append({"case": case, "quantity": quantity, "unit": unit, "fine": fine, "variant": variant,
                      "coarse": coarse, "difference_percent": 100 * difference, "tolerance": tolerance,
                      "pass": verdict, "realisations": f"{len(fine_values)}/{len(coarse_values)}",
