@@ -36,7 +36,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 GOLDSCHMIDT = os.path.normpath(os.path.join(HERE, "..", "..", "goldschmidt_segregation"))
 sys.path.insert(0, GOLDSCHMIDT)
 sys.path.insert(0, os.path.normpath(os.path.join(HERE, "..", "..", "report")))
-from coarse_graining import FINE_VARIANTS  # noqa: E402
+from coarse_graining import FINE_VARIANTS, RESTITUTION  # noqa: E402
 import mesoscale  # noqa: E402
 import void_shape  # noqa: E402
 
@@ -186,7 +186,7 @@ def record(args, runs, measured, settings):
     for variant, values in measured.items():
         bed = beds[variant]
         rows.append({"date": time.strftime("%Y-%m-%d", time.gmtime()), "commit": binary_commit(args.parcelflow),
-                     "size": args.size, "restitution": args.restitution or 0.97, "seed": args.seed or "script",
+                     "size": args.size, "restitution": args.restitution or RESTITUTION, "seed": args.seed or "script",
                      "settings": " ".join(s for s in settings if "insert_seed" not in s and "checkpoint" not in s),
                      "variant": variant, "ranks": args.ranks, "parcels": bed["parcels"],
                      "wall_s": bed["total_wall_s"], **{k: f"{v:.6g}" for k, v in values.items()}})
